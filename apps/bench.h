@@ -1,0 +1,12 @@
+// `inbetween bench CASE`: benchmarks that print one JSON object per case on its own line.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace ib {
+
+// args: the words after "bench". Returns the exit code; throws InputError on bad arguments.
+int runBench(const std::vector<std::string>& args);
+
+}  // namespace ib

@@ -1,0 +1,59 @@
+#include "cli.h"
+
+#include "error.h"
+
+#include <algorithm>
+#include <cstdlib>
+
+namespace ib::cli {
+
+Arguments::Arguments(const std::string& command, const std::vector<std::string>& args,
+                     const std::vector<std::string>& valueOptions, const std::vector<std::string>& flagOptions)
+    : command_(command) {
+  const auto known = [](const std::vector<std::string>& list, const std::string& name) {
+    return std::find(list.begin(), list.end(), name) != list.end();
+  };
+  for (size_t i = 0; i < args.size(); ++i) {
+    const std::string& arg = args[i];
+    if (arg.rfind("--", 0) != 0) {
+      positional_.push_back(arg);
+      continue;
+    }
+    std::string name = arg.substr(2), value;
+    const size_t eq = name.find('=');
+    const bool inlineValue = eq != std::string::npos;
+    if (inlineValue) {
+      value = name.substr(eq + 1);
+      name = name.substr(0, eq);
+    }
+    if (known(flagOptions, name) && !inlineValue) {
+      flags_[name] = true;
+    } else if (known(valueOptions, name)) {
+      if (!inlineValue) {
+        if (i + 1 >= args.size()) throw InputError(command_ + ": option --" + name + " needs a value");
+        value = args[++i];
+      }
+      values_[name] = value;
+    } else {
+      throw InputError(command_ + ": unknown option --" + name + " (see `inbetween " + command_ + " --help`)");
+    }
+  }
+}
+
+std::string Arguments::value(const std::string& name, const std::string& fallback) const {
+  const auto it = values_.find(name);
+  return it == values_.end() ? fallback : it->second;
+}
+
+int Arguments::integer(const std::string& name, int fallback, int min, int max) const {
+  const auto it = values_.find(name);
+  if (it == values_.end()) return fallback;
+  char* end = nullptr;
+  const long v = std::strtol(it->second.c_str(), &end, 10);
+  if (it->second.empty() || *end != '\0' || v < min || v > max)
+    throw InputError(command_ + ": --" + name + " must be a whole number in [" + std::to_string(min) + ", " +
+                     std::to_string(max) + "], got '" + it->second + "'");
+  return static_cast<int>(v);
+}
+
+}  // namespace ib::cli

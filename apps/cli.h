@@ -1,0 +1,31 @@
+// Command-line argument helpers shared by the subcommands. Errors are InputErrors (exit 2).
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace ib::cli {
+
+// Parsed options of one subcommand: --name value pairs, --flags and positional arguments.
+class Arguments {
+ public:
+  // valueOptions take a value (--threads 2 or --threads=2); flagOptions take none. Anything
+  // else starting with "--" is an error naming the option and the command.
+  Arguments(const std::string& command, const std::vector<std::string>& args,
+            const std::vector<std::string>& valueOptions, const std::vector<std::string>& flagOptions);
+
+  bool flag(const std::string& name) const { return flags_.count(name) > 0; }
+  bool has(const std::string& name) const { return values_.count(name) > 0; }
+  std::string value(const std::string& name, const std::string& fallback) const;
+  int integer(const std::string& name, int fallback, int min, int max) const;
+  const std::vector<std::string>& positional() const { return positional_; }
+
+ private:
+  std::string command_;
+  std::map<std::string, std::string> values_;
+  std::map<std::string, bool> flags_;
+  std::vector<std::string> positional_;
+};
+
+}  // namespace ib::cli

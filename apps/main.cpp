@@ -1,0 +1,54 @@
+// The `inbetween` command: a thin front end over the solver (and, later, the engine).
+// Exit codes: 0 success, 2 bad input (message names the file, field or option), 1 internal error.
+#include "bench.h"
+#include "error.h"
+
+#include <cstdio>
+#include <exception>
+#include <string>
+#include <vector>
+
+namespace {
+
+constexpr const char* kUsage =
+    "usage: inbetween COMMAND [OPTIONS]\n"
+    "\n"
+    "Interpolates key drawings (Zhu, Popovic, Bridson, Kaufman 2017).\n"
+    "\n"
+    "commands:\n"
+    "  bench interp   benchmark the interpolation solver; one JSON object per case\n"
+    "\n"
+    "options:\n"
+    "  -h, --help     show this help (also: inbetween COMMAND --help)\n";
+
+int run(const std::vector<std::string>& args) {
+  if (args.empty()) {
+    std::fputs(kUsage, stderr);
+    return 2;
+  }
+  const std::string& command = args[0];
+  if (command == "-h" || command == "--help" || command == "help") {
+    std::fputs(kUsage, stdout);
+    return 0;
+  }
+  const std::vector<std::string> rest(args.begin() + 1, args.end());
+  if (command == "bench") return ib::runBench(rest);
+  throw ib::InputError("unknown command '" + command + "' (see `inbetween --help`)");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    return run(std::vector<std::string>(argv + 1, argv + argc));
+  } catch (const ib::InputError& e) {
+    std::fprintf(stderr, "inbetween: %s\n", e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "inbetween: internal error: %s\n", e.what());
+    return 1;
+  } catch (...) {
+    std::fprintf(stderr, "inbetween: internal error\n");
+    return 1;
+  }
+}

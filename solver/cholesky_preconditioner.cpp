@@ -1,0 +1,164 @@
+#include "cholesky_preconditioner.h"
+
+#include <iostream>  // Eigen's MetisSupport reports through std::cerr without including it
+#include <Eigen/MetisSupport>
+#include <Eigen/SparseCholesky>
+#include <algorithm>
+#include <omp.h>
+#include <stdexcept>
+#include <utility>
+
+namespace ib {
+
+struct CholeskyPreconditioner::Analysis {
+  Eigen::SimplicialLLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::MetisOrdering<int>> llt;
+  bool analyzed = false;
+};
+
+CholeskyPreconditioner::CholeskyPreconditioner(int threads)
+    : analysis_(std::make_unique<Analysis>()), threads_(std::max(1, threads)) {}
+CholeskyPreconditioner::~CholeskyPreconditioner() = default;
+CholeskyPreconditioner::CholeskyPreconditioner(CholeskyPreconditioner&&) noexcept = default;
+CholeskyPreconditioner& CholeskyPreconditioner::operator=(CholeskyPreconditioner&&) noexcept = default;
+
+void CholeskyPreconditioner::factorize(const Eigen::SparseMatrix<double>& H) {
+  auto& llt = analysis_->llt;
+  const bool first = !analysis_->analyzed;
+  if (first) {
+    llt.analyzePattern(H);
+    analysis_->analyzed = true;
+  }
+  llt.factorize(H);
+  if (llt.info() != Eigen::Success) throw std::runtime_error("global matrix is not positive definite");
+  const auto& L = llt.matrixL().nestedExpression();
+  n_ = static_cast<int>(H.rows());
+  colStart_.assign(L.outerIndexPtr(), L.outerIndexPtr() + n_ + 1);
+  colRow_.assign(L.innerIndexPtr(), L.innerIndexPtr() + L.nonZeros());
+  colValue_.assign(L.valuePtr(), L.valuePtr() + L.nonZeros());
+  const Eigen::SparseMatrix<float, Eigen::RowMajor> rows = L.template cast<float>();
+  rowStart_.assign(rows.outerIndexPtr(), rows.outerIndexPtr() + n_ + 1);
+  rowCol_.assign(rows.innerIndexPtr(), rows.innerIndexPtr() + rows.nonZeros());
+  rowValue_.assign(rows.valuePtr(), rows.valuePtr() + rows.nonZeros());
+  if (first) {
+    const auto& P = llt.permutationP();
+    perm_.assign(P.indices().data(), P.indices().data() + n_);
+    buildSchedule();
+  }
+  work_.assign(2 * static_cast<size_t>(n_), 0.0);
+}
+
+void CholeskyPreconditioner::buildSchedule() {
+  // Elimination tree: the parent of column j is the first off-diagonal row of L in column j.
+  std::vector<int> parent(n_, -1);
+  for (int j = 0; j < n_; ++j)
+    if (colStart_[j] + 1 < colStart_[j + 1]) parent[j] = colRow_[colStart_[j] + 1];
+  std::vector<long> weight(n_, 0);  // nonzeros in each subtree
+  std::vector<std::vector<int>> children(n_);
+  std::vector<int> roots;
+  for (int j = 0; j < n_; ++j) {
+    weight[j] += colStart_[j + 1] - colStart_[j];
+    if (parent[j] >= 0) {
+      weight[parent[j]] += weight[j];
+      children[parent[j]].push_back(j);
+    } else {
+      roots.push_back(j);
+    }
+  }
+  // Walk down from the root while one child carries almost all the work: that chain is the top
+  // separator. Below it, subtrees are independent and go to threads by greedy balancing.
+  std::vector<int> level = roots;
+  top_.clear();
+  while (level.size() == 1 && !children[level[0]].empty()) {
+    top_.push_back(level[0]);
+    level = children[level[0]];
+  }
+  std::sort(level.begin(), level.end(), [&](int a, int b) { return weight[a] > weight[b]; });
+  part_.assign(threads_, {});
+  std::vector<long> load(threads_, 0);
+  std::vector<int> owner(n_, -1), stack;
+  for (int root : level) {
+    const int t = static_cast<int>(std::min_element(load.begin(), load.end()) - load.begin());
+    load[t] += weight[root];
+    stack = {root};
+    while (!stack.empty()) {
+      const int v = stack.back();
+      stack.pop_back();
+      owner[v] = t;
+      for (int c : children[v]) stack.push_back(c);
+    }
+  }
+  for (int j = 0; j < n_; ++j)
+    if (owner[j] >= 0) part_[owner[j]].push_back(j);  // ascending: children before parents
+  std::reverse(top_.begin(), top_.end());             // ascending as well
+}
+
+namespace {
+
+// sum_k value[k] * (x[2 index[k]], x[2 index[k] + 1]) with four independent accumulator pairs,
+// so the sum is not serialized on the latency of one chain of additions.
+std::pair<double, double> dotPair(const int* index, const float* value, int count, const double* x) {
+  double a0 = 0, a1 = 0, a2 = 0, a3 = 0, b0 = 0, b1 = 0, b2 = 0, b3 = 0;
+  int k = 0;
+  for (; k + 4 <= count; k += 4) {
+    const double l0 = value[k], l1 = value[k + 1], l2 = value[k + 2], l3 = value[k + 3];
+    const double* x0 = x + 2 * index[k];
+    const double* x1 = x + 2 * index[k + 1];
+    const double* x2 = x + 2 * index[k + 2];
+    const double* x3 = x + 2 * index[k + 3];
+    a0 += l0 * x0[0];
+    b0 += l0 * x0[1];
+    a1 += l1 * x1[0];
+    b1 += l1 * x1[1];
+    a2 += l2 * x2[0];
+    b2 += l2 * x2[1];
+    a3 += l3 * x3[0];
+    b3 += l3 * x3[1];
+  }
+  for (; k < count; ++k) {
+    const double l = value[k];
+    a0 += l * x[2 * index[k]];
+    b0 += l * x[2 * index[k] + 1];
+  }
+  return {(a0 + a1) + (a2 + a3), (b0 + b1) + (b2 + b3)};
+}
+
+}  // namespace
+
+void CholeskyPreconditioner::solve(Eigen::MatrixX2d& rhs) const {
+  double* x = work_.data();
+  for (int i = 0; i < n_; ++i) {
+    x[2 * perm_[i]] = rhs(i, 0);
+    x[2 * perm_[i] + 1] = rhs(i, 1);
+  }
+  // L y = b, by rows: y_j = (b_j - sum_{k<j} L_jk y_k) / L_jj reads only descendants of j.
+  const auto forward = [&](const std::vector<int>& columns) {
+    for (int j : columns) {
+      const int diag = rowStart_[j + 1] - 1;
+      const auto [a, b] = dotPair(&rowCol_[rowStart_[j]], &rowValue_[rowStart_[j]], diag - rowStart_[j], x);
+      x[2 * j] = (x[2 * j] - a) / rowValue_[diag];
+      x[2 * j + 1] = (x[2 * j + 1] - b) / rowValue_[diag];
+    }
+  };
+  // L^T x = y, by columns in reverse: x_j = (y_j - sum_{i>j} L_ij x_i) / L_jj reads ancestors.
+  const auto backward = [&](const std::vector<int>& columns) {
+    for (auto it = columns.rbegin(); it != columns.rend(); ++it) {
+      const int j = *it, first = colStart_[j] + 1;
+      const auto [a, b] = dotPair(&colRow_[first], &colValue_[first], colStart_[j + 1] - first, x);
+      x[2 * j] = (x[2 * j] - a) / colValue_[colStart_[j]];
+      x[2 * j + 1] = (x[2 * j + 1] - b) / colValue_[colStart_[j]];
+    }
+  };
+  const int parts = static_cast<int>(part_.size());
+#pragma omp parallel for schedule(static, 1) num_threads(parts)
+  for (int p = 0; p < parts; ++p) forward(part_[p]);
+  forward(top_);
+  backward(top_);
+#pragma omp parallel for schedule(static, 1) num_threads(parts)
+  for (int p = 0; p < parts; ++p) backward(part_[p]);
+  for (int i = 0; i < n_; ++i) {
+    rhs(i, 0) = x[2 * perm_[i]];
+    rhs(i, 1) = x[2 * perm_[i] + 1];
+  }
+}
+
+}  // namespace ib

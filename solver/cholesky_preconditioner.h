@@ -1,0 +1,52 @@
+// Sparse Cholesky factor H = L L^T (n x n, shared by the x and y columns) used by the global
+// step. The symbolic analysis (METIS nested-dissection ordering, elimination tree split) is
+// done on the first factorize() and reused: later calls must keep the sparsity pattern.
+//
+// The solver only ever uses H as a fixed quadratic model of the energy (x <- x - H^{-1} g), so
+// the factor is stored in single precision for the solves; every residual and energy stays in
+// double. Solves for both columns run fused; the two halves of the elimination tree below its
+// top separator are processed on separate threads.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Sparse>
+#include <memory>
+#include <vector>
+
+namespace ib {
+
+class CholeskyPreconditioner {
+ public:
+  explicit CholeskyPreconditioner(int threads);
+  ~CholeskyPreconditioner();
+  CholeskyPreconditioner(CholeskyPreconditioner&&) noexcept;
+  CholeskyPreconditioner& operator=(CholeskyPreconditioner&&) noexcept;
+
+  // Factorizes H (n x n, symmetric positive definite; only the lower triangle is read).
+  // Throws std::runtime_error if H is not positive definite.
+  void factorize(const Eigen::SparseMatrix<double>& H);
+  bool factorized() const { return n_ > 0; }
+
+  // rhs (n x 2) <- H^{-1} rhs.
+  void solve(Eigen::MatrixX2d& rhs) const;
+
+  long factorNonZeros() const { return static_cast<long>(colValue_.size()); }
+
+ private:
+  void buildSchedule();
+
+  struct Analysis;
+  std::unique_ptr<Analysis> analysis_;
+  int threads_ = 1;
+  int n_ = 0;
+  std::vector<int> perm_;                 // row i of rhs goes to perm_[i] of the permuted system
+  std::vector<int> colStart_, colRow_;    // L by columns (diagonal first), for L^T x = y
+  std::vector<float> colValue_;
+  std::vector<int> rowStart_, rowCol_;    // L by rows (diagonal last), for L y = b
+  std::vector<float> rowValue_;
+  std::vector<std::vector<int>> part_;    // independent subtrees, one list per thread
+  std::vector<int> top_;                  // separator columns above them, done serially
+  mutable std::vector<double> work_;      // 2n interleaved
+};
+
+}  // namespace ib

@@ -1,0 +1,57 @@
+// W_D, the triangle ARAP energy of eq. (16), summed over keys with interpolation weights:
+//   sum_i w_i sum_t kappa_t a_t(X_i) || F_t(X_i, x) - R_t ||_F^2,   F = D(x) B_ti,
+// where D(x) = [x1 - x0, x2 - x0] (2x2, edge vectors as columns), B_ti = D(X_i)^{-1} and R_t
+// the rotation closest to F (the local step). All positions are n x 2, one row per vertex.
+#pragma once
+
+#include "multimesh.h"
+
+#include <Eigen/Core>
+#include <vector>
+
+namespace ib {
+
+// Weights restricted to the keys that take part: w_i > 0. Keys with zero weight cost nothing.
+struct ActiveKeys {
+  std::vector<int> index;      // key indices i with w_i > 0
+  std::vector<double> weight;  // their w_i
+};
+ActiveKeys activeKeys(const Eigen::VectorXd& w);
+
+class DeformationEnergy {
+ public:
+  // keys: X_i (n x 2 each); kappa: t x 1. Rest triangles must have positive area.
+  DeformationEnergy(const std::vector<Triangle>& triangles, const std::vector<Eigen::MatrixX2d>& keys,
+                    const Eigen::VectorXd& kappa);
+
+  int triangleCount() const { return static_cast<int>(triangles_.size()); }
+  const std::vector<Triangle>& triangles() const { return triangles_; }
+
+  // Per-triangle 2x2 metric M_t(w) = 2 sum_i w_i c_ti B_ti B_ti^T, so that with rotations frozen
+  // the Hessian of W_D for one coordinate is sum_t E^T M_t E (E maps corner values to edges).
+  std::vector<Eigen::Matrix2d> metrics(const ActiveKeys& keys) const;
+
+  // Local step fused with evaluation: rotations for every triangle and active key, returns W_D
+  // and adds dW_D/dx (n x 2) to gradient. Runs in parallel over triangles on `threads` threads.
+  // Uses an internal scratch buffer: one evaluate() at a time per object.
+  double evaluate(const Eigen::MatrixX2d& x, const ActiveKeys& keys, Eigen::MatrixX2d& gradient, int threads) const;
+
+  // Lumped vertex areas averaged over keys (n x 1): one third of each incident triangle.
+  Eigen::VectorXd lumpedAreas() const { return lumpedArea_; }
+
+ private:
+  std::vector<Triangle> triangles_;
+  int keyCount_ = 0;
+  std::vector<Eigen::Matrix2d> restInverse_;  // B_ti at [t * m + i]
+  std::vector<double> weight_;                // c_ti = kappa_t * area_ti at [t * m + i]
+  std::vector<int> incidenceStart_;           // CSR over vertices of (triangle, corner)
+  std::vector<int> incidence_;                // 3 * t + corner
+  Eigen::VectorXd lumpedArea_;
+  mutable std::vector<Eigen::Matrix2d> blocks_;  // scratch: per-triangle gradient blocks
+  mutable std::vector<double> interleaved_;      // scratch: x as x0 y0 x1 y1 ...
+};
+
+// Rotation closest to F in the Frobenius norm (2D polar decomposition, valid for any F).
+Eigen::Matrix2d closestRotation(const Eigen::Matrix2d& F);
+
+}  // namespace ib

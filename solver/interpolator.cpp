@@ -1,0 +1,287 @@
+#include "interpolator.h"
+
+#include "error.h"
+
+#include <chrono>
+#include <cmath>
+#include <omp.h>
+#include <stdexcept>
+
+namespace ib {
+
+namespace {
+
+std::vector<std::pair<int, int>> meshEdges(const Multimesh& mesh) {
+  std::vector<std::pair<int, int>> edges;
+  for (auto e : mesh.topology().edges()) edges.push_back({e.v0().idx(), e.v1().idx()});
+  return edges;
+}
+
+const Multimesh& validated(const Multimesh& mesh) {
+  mesh.validate();
+  return mesh;
+}
+
+void require(bool ok, const std::string& field, const std::string& rule) {
+  if (!ok) throw InputError("solver option " + field + ": " + rule);
+}
+
+void validateOptions(const InterpolationParams& p, const SolverOptions& o) {
+  const CohesiveParams& c = p.cohesive;
+  require(std::isfinite(c.lambda) && c.lambda >= 0, "lambda", "must be a finite number >= 0");
+  require(c.tau > 0 && !std::isnan(c.tau), "tau", "must be > 0 (infinity: pairs never separate)");
+  require(c.alpha >= 0 && c.alpha <= 1, "alpha", "must be in [0, 1]");
+  require(o.relativeTolerance > 0 && o.relativeTolerance < 1, "relativeTolerance", "must be in (0, 1)");
+  require(o.maxIterations >= 1, "maxIterations", "must be >= 1");
+  require(o.andersonDepth >= 0 && o.andersonDepth <= 50, "andersonDepth", "must be in [0, 50]");
+  require(o.refactorDistance >= 0 && std::isfinite(o.refactorDistance), "refactorDistance", "must be >= 0");
+  require(o.placementStiffness > 0 && std::isfinite(o.placementStiffness), "placementStiffness", "must be > 0");
+  require(o.nonOverlapStiffness > 0 && std::isfinite(o.nonOverlapStiffness), "nonOverlapStiffness", "must be > 0");
+  require(o.threads >= 0, "threads", "must be >= 0 (0 = all cores)");
+}
+
+double infinityNorm(const Eigen::MatrixX2d& g) { return g.size() ? g.cwiseAbs().maxCoeff() : 0.0; }
+
+Eigen::Map<const Eigen::VectorXd> flat(const Eigen::MatrixX2d& x) { return {x.data(), x.size()}; }
+
+}  // namespace
+
+void validateWeights(const Eigen::VectorXd& w, int keyCount) {
+  if (w.size() != keyCount)
+    throw InputError("weights: expected " + std::to_string(keyCount) + " values (one per key), got " +
+                     std::to_string(w.size()));
+  for (int i = 0; i < w.size(); ++i) {
+    if (!std::isfinite(w(i))) throw InputError("weights: w[" + std::to_string(i) + "] is not a finite number");
+    if (w(i) < 0) throw InputError("weights: w[" + std::to_string(i) + "] = " + std::to_string(w(i)) + " is negative");
+  }
+  if (std::abs(w.sum() - 1.0) > 1e-6)
+    throw InputError("weights: sum to " + std::to_string(w.sum()) + ", must sum to 1");
+}
+
+struct Interpolator::Frame {
+  Eigen::VectorXd w;
+  ActiveKeys keys;
+  Eigen::MatrixX2d blend;         // Xbar(w) = sum_i w_i X_i, normalized
+  std::vector<int> participants;  // W_O boundary vertices
+};
+
+struct Interpolator::State {
+  Eigen::MatrixX2d x, gradient;
+  double energy = 0;                          // W_I + E_P
+  double placement = 0;                       // E_P alone
+  std::vector<char> active;                   // cohesive terms not clamped
+  std::vector<std::pair<int, int>> contacts;  // W_O offenders
+};
+
+Interpolator::Interpolator(const Multimesh& mesh, const InterpolationParams& params, const SolverOptions& options)
+    : params_(params),
+      options_(options),
+      threads_(options.threads > 0 ? options.threads : omp_get_max_threads()),
+      groups_(validated(mesh).vertexCount(), meshEdges(mesh)),
+      factor_(options.threads > 0 ? options.threads : omp_get_max_threads()),
+      anderson_(options.andersonDepth) {
+  validateOptions(params, options);
+  const std::vector<Triangle> triangles = mesh.triangles();
+  double meanArea = 0;
+  for (int i = 0; i < mesh.keyCount(); ++i) {
+    keys_.push_back(mesh.keyPositions(i));
+    for (const Triangle& t : triangles)
+      meanArea += signedArea(keys_[i].row(t[0]), keys_[i].row(t[1]), keys_[i].row(t[2])) / mesh.keyCount();
+  }
+  scale_ = std::sqrt(meanArea);
+  for (auto& X : keys_) X /= scale_;
+  edges_ = meshEdges(mesh);
+  deformation_ = std::make_unique<DeformationEnergy>(triangles, keys_, mesh.stiffnesses());
+  cohesive_ = std::make_unique<CohesiveEnergy>(mesh, keys_, params.cohesive);
+  mass_ = deformation_->lumpedAreas();
+
+  // Mean diagonal of the ARAP matrix at uniform weights: the stiffness scale of one vertex.
+  const Eigen::VectorXd uniform = Eigen::VectorXd::Constant(keyCount(), 1.0 / keyCount());
+  const auto M = deformation_->metrics(activeKeys(uniform));
+  double diagonal = 0;
+  for (const auto& Mt : M) diagonal += Mt.sum();  // sum of E^T M E's diagonal = sum of M's entries
+  diagonal /= vertexCount();
+  gradientFloor_ = 1e-13 * diagonal;
+  nonOverlap_ = std::make_unique<NonOverlap>(mesh, options.nonOverlapStiffness * diagonal);
+}
+
+Interpolator::Frame Interpolator::makeFrame(const Eigen::VectorXd& w) const {
+  validateWeights(w, keyCount());
+  Frame f;
+  f.w = w;
+  f.keys = activeKeys(w);
+  f.blend = Eigen::MatrixX2d::Zero(vertexCount(), 2);
+  for (size_t a = 0; a < f.keys.index.size(); ++a) f.blend += f.keys.weight[a] * keys_[f.keys.index[a]];
+  f.participants = nonOverlap_->participants(f.keys);
+  return f;
+}
+
+void Interpolator::evaluateState(const Frame& frame, State& s) const {
+  s.gradient = Eigen::MatrixX2d::Zero(vertexCount(), 2);
+  s.energy = deformation_->evaluate(s.x, frame.keys, s.gradient, threads_);
+  s.energy += cohesive_->evaluate(s.x, frame.w, s.gradient, s.active);
+  const double mu = options_.placementStiffness;
+  const Eigen::MatrixX2d offset = s.x - frame.blend;
+  s.placement = 0.5 * mu * (mass_.array() * offset.rowwise().squaredNorm().array()).sum();
+  s.energy += s.placement;
+  s.gradient += mu * (offset.array().colwise() * mass_.array()).matrix();
+  s.contacts.clear();
+  if (params_.nonOverlap) s.energy += nonOverlap_->evaluate(s.x, frame.participants, s.gradient, s.contacts);
+}
+
+void Interpolator::align(const Frame& frame, const State& reference, Eigen::MatrixX2d& x) {
+  std::vector<std::pair<int, int>> links = reference.contacts;
+  const auto& terms = cohesive_->terms();
+  for (size_t j = 0; j < terms.size(); ++j)
+    if (j < reference.active.size() && reference.active[j]) {
+      links.push_back({terms[j].pair.a, terms[j].pair.c});
+      links.push_back({terms[j].pair.b, terms[j].pair.d});
+    }
+  groups_.update(links);
+  alignGroups(x, frame.blend, mass_, groups_);
+}
+
+Eigen::SparseMatrix<double> Interpolator::globalMatrix(const Eigen::VectorXd& w, const std::vector<char>& active) const {
+  const int n = vertexCount();
+  std::vector<Eigen::Triplet<double>> entries;
+  const auto& triangles = deformation_->triangles();
+  const auto M = deformation_->metrics(activeKeys(w));
+  entries.reserve(9 * triangles.size() + 16 * cohesive_->terms().size() + 2 * n);
+  Eigen::Matrix<double, 2, 3> E;
+  E << -1, 1, 0, -1, 0, 1;
+  for (size_t t = 0; t < triangles.size(); ++t) {
+    const Eigen::Matrix3d K = E.transpose() * M[t] * E;
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c) entries.emplace_back(triangles[t][r], triangles[t][c], K(r, c));
+  }
+  const auto& terms = cohesive_->terms();
+  for (size_t j = 0; j < terms.size(); ++j) {
+    const CohesivePair& p = terms[j].pair;
+    // k S [[2,1],[1,2]] S^T with S = [e_a - e_c, e_b - e_d]; zeros keep the pattern when clamped.
+    const double k = (j < active.size() && active[j]) ? w(terms[j].key) * cohesive_->springConstant(j) : 0.0;
+    const int vert[4] = {p.a, p.c, p.b, p.d};
+    const double sign[4] = {1, -1, 1, -1};
+    for (int r = 0; r < 4; ++r)
+      for (int c = 0; c < 4; ++c) {
+        const double block = (r / 2 == c / 2) ? 2.0 : 1.0;
+        entries.emplace_back(vert[r], vert[c], k * block * sign[r] * sign[c]);
+      }
+  }
+  for (int v = 0; v < n; ++v) entries.emplace_back(v, v, options_.placementStiffness * mass_(v));
+  if (params_.nonOverlap)
+    for (int v : nonOverlap_->allBoundaryVertices()) entries.emplace_back(v, v, nonOverlap_->stiffness());
+  Eigen::SparseMatrix<double> H(n, n);
+  H.setFromTriplets(entries.begin(), entries.end());
+  return H;
+}
+
+bool Interpolator::ensureFactorization(const Eigen::VectorXd& w, const std::vector<char>& active) {
+  const bool fresh = factor_.factorized() && (w - factorWeights_).lpNorm<1>() <= options_.refactorDistance &&
+                     (options_.refactorDistance > 0 || w == factorWeights_) && active == factorActive_;
+  if (fresh) return false;
+  factor_.factorize(globalMatrix(w, active));
+  factorWeights_ = w;
+  factorActive_ = active;
+  return true;
+}
+
+EnergyEvaluation Interpolator::evaluate(const Eigen::MatrixX2d& x, const Eigen::VectorXd& w) const {
+  if (x.rows() != vertexCount()) throw InputError("positions: expected " + std::to_string(vertexCount()) + " rows");
+  const Frame frame = makeFrame(w);
+  State s;
+  s.x = x / scale_;
+  evaluateState(frame, s);
+  return {s.energy, s.gradient / scale_};
+}
+
+int Interpolator::countOverlaps(const Eigen::MatrixX2d& x, const Eigen::VectorXd& w) const {
+  return nonOverlap_->countInside(x / scale_, makeFrame(w).participants);
+}
+
+InterpolationResult Interpolator::solve(const Eigen::VectorXd& w, const Eigen::MatrixX2d* warmStart) {
+  const auto started = std::chrono::steady_clock::now();
+  const Frame frame = makeFrame(w);
+  State s;
+  if (warmStart) {
+    if (warmStart->rows() != vertexCount() || !warmStart->allFinite())
+      throw InputError("warm start: expected " + std::to_string(vertexCount()) + " finite positions");
+    s.x = *warmStart / scale_;
+  } else {
+    s.x = frame.blend;
+  }
+  evaluateState(frame, s);
+  align(frame, s, s.x);
+  evaluateState(frame, s);
+
+  InterpolationResult result;
+  result.factorizations = ensureFactorization(w, s.active) ? 1 : 0;
+  result.startEnergy = s.energy;
+  result.energyHistory.push_back(s.energy);
+  const double startNorm = infinityNorm(s.gradient);
+  const double slack = 1e-12 * std::abs(s.energy);
+  // The fixed-point map of this frame is close to the last one's unless H or the set of keys
+  // changed: then the secant history is reset, otherwise it seeds this frame.
+  if (result.factorizations > 0 || frame.keys.index != andersonKeys_) anderson_.reset();
+  anderson_.restart();
+  andersonKeys_ = frame.keys.index;
+  // Converged when the gradient fell by the relative tolerance, or reached the absolute floor
+  // where it is rounding noise (a start that is already a minimizer).
+  const double target = std::max(options_.relativeTolerance * startNorm, gradientFloor_);
+  double norm = startNorm;
+  const auto relative = [&](double value) { return startNorm > 0 ? value / startNorm : 0.0; };
+  result.residualHistory.push_back(relative(norm));
+
+  State candidate;
+  while (norm > target && result.iterations < options_.maxIterations) {
+    Eigen::MatrixX2d step = s.gradient;
+    factor_.solve(step);
+    Eigen::MatrixX2d plain = s.x - step;
+    align(frame, s, plain);
+    const Eigen::VectorXd accelerated = anderson_.next(flat(s.x), flat(plain));
+    candidate.x = Eigen::Map<const Eigen::MatrixX2d>(accelerated.data(), vertexCount(), 2);
+    evaluateState(frame, candidate);
+    ++result.evaluations;
+    bool accepted = candidate.energy <= s.energy + slack;
+    if (!accepted && options_.andersonDepth > 0) {
+      anderson_.reset();
+      candidate.x = plain;
+      evaluateState(frame, candidate);
+      ++result.evaluations;
+      accepted = candidate.energy <= s.energy + slack;
+    }
+    if (!accepted && s.active != factorActive_) {
+      // Cohesive pairs engaged or let go since H was built: H no longer models the energy.
+      factor_.factorize(globalMatrix(w, s.active));
+      factorWeights_ = w;
+      factorActive_ = s.active;
+      ++result.factorizations;
+      anderson_.reset();
+      continue;
+    }
+    for (double beta = 0.5; !accepted && beta > 1e-3; beta *= 0.5) {
+      candidate.x = s.x + beta * (plain - s.x);
+      evaluateState(frame, candidate);
+      ++result.evaluations;
+      accepted = candidate.energy <= s.energy + slack;
+    }
+    if (!accepted) break;  // no decrease along the step: stalled, reported as not converged
+    std::swap(s, candidate);
+    ++result.iterations;
+    result.energyHistory.push_back(s.energy);
+    norm = infinityNorm(s.gradient);
+    result.residualHistory.push_back(relative(norm));
+  }
+
+  if (params_.nonOverlap) nonOverlap_->project(s.x, frame.participants);
+  if (!s.x.allFinite()) throw std::runtime_error("interpolation produced non-finite positions");
+  result.converged = norm <= target;
+  result.relativeResidual = relative(norm);
+  result.energy = s.energy;
+  result.interpolationEnergy = s.energy - s.placement;
+  result.x = s.x * scale_;
+  result.milliseconds =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
+  return result;
+}
+
+}  // namespace ib

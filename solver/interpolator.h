@@ -1,0 +1,128 @@
+// Variational interpolation over a multimesh (eq. 9):
+//   x(w) = argmin_x sum_i w_i [ W_C(C_i, x) + W_O(B_i, x) + W_D(X_i, x) ]  (+ the weak placement tie E_P)
+// solved by an accelerated local-global method (libigl's precompute/solve split: the
+// constructor does the heavy setup once, solve() is the cheap per-frame call).
+//
+// Iteration. The local step (rotations per triangle and key, cohesive directions and clamping,
+// non-overlap targets) runs fused with the evaluation of the energy E and its gradient g. The
+// global step is x <- x - H^{-1} g with H = sum_t E^T M_t(w) E + cohesive springs + mu M, an n x n
+// matrix shared by x and y. With H the exact quadratic of the current frame this is the
+// classic global solve; H is refactorized only when w has moved by more than
+// SolverOptions::refactorDistance (L1) since the last factorization, when the set of active
+// cohesive pairs at the start of a frame differs from H's, or when a step fails while it differs
+// (pairs engaged or let go mid-solve); otherwise it serves as a fixed preconditioner: the fixed point is the
+// same stationary point (g = 0), and the anisotropic, x-dependent cohesive matrix P lives in the
+// gradient (local step), not in H. Anderson acceleration on top; an accelerated iterate that
+// raises E is replaced by the plain step, and a plain step that raises E is backtracked, so a
+// solve never returns a worse energy than its start.
+//
+// Units. Internally all lengths are divided by the shape size s = sqrt(mean key area), so
+// lambda, tau and energies mean the same at any drawing resolution. Inputs and outputs are in
+// the multimesh's own units.
+#pragma once
+
+#include "anderson.h"
+#include "cholesky_preconditioner.h"
+#include "cohesive_energy.h"
+#include "deformation_energy.h"
+#include "multimesh.h"
+#include "non_overlap.h"
+#include "placement.h"
+
+#include <Eigen/Core>
+#include <Eigen/Sparse>
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace ib {
+
+struct InterpolationParams {
+  CohesiveParams cohesive;  // lambda, tau, alpha (normalized units)
+  bool nonOverlap = false;  // enforce W_O (eq. 14); off by default, as in the paper
+};
+
+struct SolverOptions {
+  double relativeTolerance = 1e-3;  // stop when |g|_inf / |g(x_start)|_inf < this (paper 7.1)
+  int maxIterations = 500;          // iteration cap; reaching it is reported as not converged
+  int andersonDepth = 10;           // Anderson history length; 0 = plain local-global
+  double refactorDistance = 0.5;    // refactorize H when |w - w_H|_1 exceeds this; 0 = exact H every frame
+  double placementStiffness = 1e-5; // mu of the placement tie E_P (see placement.h), > 0
+  double nonOverlapStiffness = 10;  // W_O penalty k, relative to the mean diagonal of the ARAP matrix
+  int threads = 0;                  // threads for the local step and solves; 0 = all cores
+};
+
+struct InterpolationResult {
+  Eigen::MatrixX2d x;                 // n x 2, the inbetween in the multimesh's units
+  int iterations = 0;
+  int evaluations = 0;                // local steps (energy + gradient), rejected candidates included
+  double relativeResidual = 0;        // |g|_inf / |g(x_start)|_inf at the end (0 for a zero start gradient)
+  double energy = 0;                  // W_I + E_P at x (normalized units)
+  double startEnergy = 0;             // the same at the (aligned) start
+  double interpolationEnergy = 0;     // W_I alone at x (eq. 9), without the placement tie
+  bool converged = false;             // residual below tolerance, or |g| at rounding level; never a small step
+  int factorizations = 0;             // numeric factorizations of H during this solve
+  double milliseconds = 0;            // wall time of this solve, factorization included
+  std::vector<double> energyHistory;    // energy after each iteration (start first)
+  std::vector<double> residualHistory;  // relative residual after each iteration (start first: 1)
+};
+
+struct EnergyEvaluation {
+  double energy = 0;          // W_I + E_P, normalized units
+  Eigen::MatrixX2d gradient;  // d energy / d x, n x 2, with x in the multimesh's units
+};
+
+class Interpolator {
+ public:
+  // Validates the multimesh and the parameters (InputError naming the field on failure).
+  Interpolator(const Multimesh& mesh, const InterpolationParams& params, const SolverOptions& options);
+
+  // Solves for weights w (m x 1, convex). warmStart (n x 2, multimesh units) is the previous
+  // frame; without it the solve starts from the linear blend sum_i w_i X_i.
+  InterpolationResult solve(const Eigen::VectorXd& w, const Eigen::MatrixX2d* warmStart = nullptr);
+
+  // Energy and gradient at x for weights w, local-step quantities taken at x (for tests).
+  EnergyEvaluation evaluate(const Eigen::MatrixX2d& x, const Eigen::VectorXd& w) const;
+
+  // Boundary vertices of the active keys inside the deformed mesh at x (0 when W_O holds),
+  // counted whether or not W_O is enforced.
+  int countOverlaps(const Eigen::MatrixX2d& x, const Eigen::VectorXd& w) const;
+
+  double shapeSize() const { return scale_; }
+  int keyCount() const { return static_cast<int>(keys_.size()); }
+  int vertexCount() const { return static_cast<int>(mass_.size()); }
+  int threads() const { return threads_; }
+  long factorNonZeros() const { return factor_.factorNonZeros(); }
+
+ private:
+  struct Frame;
+  struct State;
+  Frame makeFrame(const Eigen::VectorXd& w) const;
+  void evaluateState(const Frame& frame, State& state) const;
+  void align(const Frame& frame, const State& reference, Eigen::MatrixX2d& x);
+  bool ensureFactorization(const Eigen::VectorXd& w, const std::vector<char>& active);
+  Eigen::SparseMatrix<double> globalMatrix(const Eigen::VectorXd& w, const std::vector<char>& active) const;
+
+  InterpolationParams params_;
+  SolverOptions options_;
+  int threads_ = 1;
+  double scale_ = 1;                       // shape size s
+  std::vector<Eigen::MatrixX2d> keys_;     // X_i / s
+  std::vector<std::pair<int, int>> edges_; // mesh edges
+  Eigen::VectorXd mass_;                   // lumped vertex areas m_v (normalized)
+  std::unique_ptr<DeformationEnergy> deformation_;
+  std::unique_ptr<CohesiveEnergy> cohesive_;
+  std::unique_ptr<NonOverlap> nonOverlap_;  // always built; used when params_.nonOverlap
+  PlacementGroups groups_;
+  CholeskyPreconditioner factor_;
+  AndersonAcceleration anderson_;          // kept across frames while H and the active keys stay
+  std::vector<int> andersonKeys_;          // active keys the history belongs to
+  Eigen::VectorXd factorWeights_;
+  std::vector<char> factorActive_;
+  double gradientFloor_ = 0;               // absolute |g|_inf below which a start is converged
+};
+
+// Checks interpolation weights: m entries, finite, non-negative, summing to 1 (within 1e-6).
+void validateWeights(const Eigen::VectorXd& w, int keyCount);
+
+}  // namespace ib

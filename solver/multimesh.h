@@ -1,0 +1,79 @@
+// Multimesh (paper section 3.2): one shared triangle topology O = {V, E, T} on OpenMesh with,
+// for every key shape i in [0, m): vertex positions X_i (n x 2), cohesive edge pairs C_i and the
+// boundary vertex set B_i; plus a stiffness kappa per triangle.
+//
+// Conventions: vertex and triangle indices are OpenMesh's (0..n-1, 0..t-1). Every triangle
+// has positive signed area (x1-x0) x (x2-x0) in every key, in the units the positions are
+// given in (drawing pixels for scenes; any unit for meshes built in code).
+#pragma once
+
+#include <Eigen/Core>
+#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+#include <array>
+#include <string>
+#include <vector>
+
+namespace ib {
+
+// A cohesive edge pair C_i^j = {{a, b}, {c, d}} (eq. 10): mesh edges (a, b) and (c, d) that
+// are collocated in the key that owns the pair, with X^a == X^c and X^b == X^d there.
+struct CohesivePair {
+  int a = 0, b = 0, c = 0, d = 0;
+};
+
+using TopologyMesh = OpenMesh::TriMesh_ArrayKernelT<>;
+using Triangle = std::array<int, 3>;
+
+class Multimesh {
+ public:
+  // Shared topology from a triangle list over vertices 0..vertexCount-1. Throws InputError on
+  // out-of-range or repeated indices and on faces OpenMesh rejects as non-manifold.
+  Multimesh(int vertexCount, const std::vector<Triangle>& triangles);
+
+  int vertexCount() const { return static_cast<int>(mesh_.n_vertices()); }
+  int triangleCount() const { return static_cast<int>(mesh_.n_faces()); }
+  int keyCount() const { return static_cast<int>(keys_.size()); }
+
+  // Triangles as vertex index triples, in face order (t x 3).
+  std::vector<Triangle> triangles() const;
+  const TopologyMesh& topology() const { return mesh_; }
+
+  // Appends key i = keyCount(): positions X_i (n x 2), cohesive pairs C_i, boundary set B_i.
+  // Sizes are checked here; geometry is checked by validate().
+  int addKey(const Eigen::MatrixX2d& positions, std::vector<CohesivePair> cohesive,
+             std::vector<int> boundary);
+
+  Eigen::MatrixX2d keyPositions(int key) const;            // X_i, n x 2
+  void setKeyPositions(int key, const Eigen::MatrixX2d& positions);
+  const std::vector<CohesivePair>& cohesivePairs(int key) const { return keys_.at(key).cohesive; }
+  const std::vector<int>& boundaryVertices(int key) const { return keys_.at(key).boundary; }
+
+  // Per-triangle stiffness kappa_k (eq. 16), default 1.
+  double stiffness(int triangle) const;
+  void setStiffness(int triangle, double kappa);
+  Eigen::VectorXd stiffnesses() const;  // t x 1
+
+  // Checks everything the solver relies on and throws InputError naming the key, triangle,
+  // vertex or pair at fault: at least one key, finite positions, positive triangle areas in
+  // every key (relative to the key's size), positive finite kappa, valid cohesive pairs whose
+  // edges exist and are collocated in their key, valid boundary indices.
+  void validate() const;
+
+ private:
+  struct Key {
+    OpenMesh::VPropHandleT<OpenMesh::Vec2d> position;
+    std::vector<CohesivePair> cohesive;
+    std::vector<int> boundary;
+  };
+  TopologyMesh mesh_;
+  OpenMesh::FPropHandleT<double> kappa_;
+  std::vector<Key> keys_;
+};
+
+// Signed area of triangle (p0, p1, p2): positive when counter-clockwise in a y-up frame.
+double signedArea(const Eigen::Vector2d& p0, const Eigen::Vector2d& p1, const Eigen::Vector2d& p2);
+
+// Size of a point set: the diagonal of its bounding box (0 for fewer than two points).
+double boundingDiagonal(const Eigen::MatrixX2d& points);
+
+}  // namespace ib

@@ -1,0 +1,202 @@
+#include "non_overlap.h"
+
+#include "box_grid.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace ib {
+
+namespace {
+
+// Barycentric coordinates of p in triangle (a, b, c); false for a degenerate triangle.
+bool barycentric(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c,
+                 double l[3]) {
+  const auto cross = [](const Eigen::Vector2d& u, const Eigen::Vector2d& v) { return u.x() * v.y() - u.y() * v.x(); };
+  const double area = cross(b - a, c - a);
+  if (std::abs(area) < 1e-300) return false;
+  l[0] = cross(b - p, c - p) / area;
+  l[1] = cross(c - p, a - p) / area;
+  l[2] = cross(a - p, b - p) / area;
+  return true;
+}
+
+// Parameter t in [0, 1] of the point of segment (a, b) closest to p.
+double segmentParameter(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  const Eigen::Vector2d ab = b - a;
+  const double len2 = ab.squaredNorm();
+  return len2 > 0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
+}
+
+}  // namespace
+
+NonOverlap::NonOverlap(const Multimesh& mesh, double stiffness)
+    : triangles_(mesh.triangles()), stiffness_(stiffness) {
+  const auto& topo = mesh.topology();
+  for (auto e : topo.edges())
+    if (e.is_boundary()) boundaryEdges_.push_back({e.v0().idx(), e.v1().idx()});
+  boundaryVertex_.assign(mesh.vertexCount(), 0);
+  for (auto v : topo.vertices()) boundaryVertex_[v.idx()] = v.is_boundary();
+  boundaryEdge_.resize(triangles_.size());
+  for (auto f : topo.faces()) {
+    const Triangle& tri = triangles_[f.idx()];
+    for (auto h : f.halfedges()) {
+      const int from = h.from().idx(), to = h.to().idx();
+      for (int c = 0; c < 3; ++c)  // the edge opposite corner c joins the other two corners
+        if (tri[c] != from && tri[c] != to) boundaryEdge_[f.idx()][c] = h.opp().is_boundary();
+    }
+  }
+  partners_.resize(mesh.vertexCount());
+  for (int i = 0; i < mesh.keyCount(); ++i) {
+    std::vector<int> b = mesh.boundaryVertices(i);
+    std::sort(b.begin(), b.end());
+    b.erase(std::unique(b.begin(), b.end()), b.end());
+    keyBoundary_.push_back(b);
+    allBoundary_.insert(allBoundary_.end(), b.begin(), b.end());
+    for (const CohesivePair& p : mesh.cohesivePairs(i)) {
+      partners_[p.a].push_back(p.c);
+      partners_[p.c].push_back(p.a);
+      partners_[p.b].push_back(p.d);
+      partners_[p.d].push_back(p.b);
+    }
+  }
+  std::sort(allBoundary_.begin(), allBoundary_.end());
+  allBoundary_.erase(std::unique(allBoundary_.begin(), allBoundary_.end()), allBoundary_.end());
+}
+
+std::vector<int> NonOverlap::participants(const ActiveKeys& keys) const {
+  std::vector<int> out;
+  for (int i : keys.index) out.insert(out.end(), keyBoundary_[i].begin(), keyBoundary_[i].end());
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+bool NonOverlap::interiorPoint(const Eigen::Vector2d& p, const Eigen::MatrixX2d& x, int k) const {
+  const auto& tri = triangles_[k];
+  double l[3];
+  if (!barycentric(p, x.row(tri[0]), x.row(tri[1]), x.row(tri[2]), l)) return false;
+  constexpr double margin = 1e-9;  // relative to the triangle: points this close count as on it
+  int onEdges = 0, edge = -1;
+  for (int c = 0; c < 3; ++c) {
+    if (l[c] < -margin) return false;
+    if (l[c] <= margin) {
+      ++onEdges;
+      edge = c;
+    }
+  }
+  if (onEdges == 0) return true;
+  if (onEdges == 1) return !boundaryEdge_[k][edge];  // on the edge opposite corner `edge`
+  for (int c = 0; c < 3; ++c)                        // at the corner whose coordinate is ~1
+    if (l[c] > margin) return !boundaryVertex_[tri[c]];
+  return false;
+}
+
+bool NonOverlap::excluded(int vertex, int other) const {
+  if (other == vertex) return true;
+  const auto& p = partners_[vertex];
+  return std::find(p.begin(), p.end(), other) != p.end();
+}
+
+std::vector<NonOverlap::Offender> NonOverlap::offenders(const Eigen::MatrixX2d& x, const std::vector<int>& participants,
+                                                        bool withTargets) const {
+  std::vector<Offender> out;
+  if (participants.empty()) return out;
+  const int t = static_cast<int>(triangles_.size());
+  Eigen::MatrixX2d lo(t, 2), hi(t, 2);
+  double edgeSum = 0;
+  for (int k = 0; k < t; ++k) {
+    const auto& tri = triangles_[k];
+    lo.row(k) = x.row(tri[0]).cwiseMin(x.row(tri[1])).cwiseMin(x.row(tri[2]));
+    hi.row(k) = x.row(tri[0]).cwiseMax(x.row(tri[1])).cwiseMax(x.row(tri[2]));
+    edgeSum += (hi.row(k) - lo.row(k)).norm();
+  }
+  const double cell = std::max(edgeSum / t, 1e-12);
+  const BoxGrid triangleGrid(lo, hi, cell);
+  for (int v : participants) {
+    const Eigen::Vector2d p = x.row(v).transpose();
+    for (int k : triangleGrid.itemsAt(p)) {
+      const auto& tri = triangles_[k];
+      if (excluded(v, tri[0]) || excluded(v, tri[1]) || excluded(v, tri[2])) continue;
+      if (interiorPoint(p, x, k)) {
+        out.push_back({v, k, p});
+        break;
+      }
+    }
+  }
+  if (!withTargets || out.empty()) return out;
+
+  const int e = static_cast<int>(boundaryEdges_.size());
+  Eigen::MatrixX2d elo(e, 2), ehi(e, 2);
+  for (int k = 0; k < e; ++k) {
+    elo.row(k) = x.row(boundaryEdges_[k].first).cwiseMin(x.row(boundaryEdges_[k].second));
+    ehi.row(k) = x.row(boundaryEdges_[k].first).cwiseMax(x.row(boundaryEdges_[k].second));
+  }
+  const BoxGrid edgeGrid(elo, ehi, cell);
+  // A target must itself be outside the mesh interior (another component may cover it).
+  const auto feasible = [&](const Eigen::Vector2d& q, int v) {
+    for (int k : triangleGrid.itemsAt(q)) {
+      const auto& tri = triangles_[k];
+      if (excluded(v, tri[0]) || excluded(v, tri[1]) || excluded(v, tri[2])) continue;
+      if (interiorPoint(q, x, k)) return false;
+    }
+    return true;
+  };
+  for (Offender& o : out) {
+    const Eigen::Vector2d p = x.row(o.vertex).transpose();
+    double best = std::numeric_limits<double>::infinity();
+    for (int ring = 0; best > (ring - 1) * edgeGrid.cellSize(); ++ring) {
+      const bool inGrid = edgeGrid.visitRing(p, ring, [&](int k) {
+        const auto [a, b] = boundaryEdges_[k];
+        if (excluded(o.vertex, a) || excluded(o.vertex, b)) return;
+        const Eigen::Vector2d xa = x.row(a).transpose(), xb = x.row(b).transpose();
+        const double t = segmentParameter(p, xa, xb);
+        const Eigen::Vector2d q = xa + t * (xb - xa);
+        const double d = (q - p).norm();
+        if (d < best && feasible(q, o.vertex)) {
+          best = d;
+          o.target = q;
+          o.edgeA = a;
+          o.edgeB = b;
+          o.t = t;
+        }
+      });
+      if (!inGrid) break;
+    }
+  }
+  return out;
+}
+
+double NonOverlap::evaluate(const Eigen::MatrixX2d& x, const std::vector<int>& participants, Eigen::MatrixX2d& gradient,
+                            std::vector<std::pair<int, int>>& contacts) const {
+  contacts.clear();
+  double energy = 0;
+  for (const Offender& o : offenders(x, participants, true)) {
+    if (o.edgeA < 0) continue;  // no boundary edge to go to (cannot happen on a valid mesh)
+    const Eigen::RowVector2d force = stiffness_ * (x.row(o.vertex) - o.target.transpose());
+    energy += 0.5 * force.squaredNorm() / stiffness_;
+    gradient.row(o.vertex) += force;
+    gradient.row(o.edgeA) -= (1 - o.t) * force;
+    gradient.row(o.edgeB) -= o.t * force;
+    contacts.push_back({o.vertex, triangles_[o.triangle][0]});
+    contacts.push_back({o.vertex, o.edgeA});
+  }
+  return energy;
+}
+
+int NonOverlap::project(Eigen::MatrixX2d& x, const std::vector<int>& participants, int passes) const {
+  for (int pass = 0; pass < passes; ++pass) {
+    const auto found = offenders(x, participants, true);
+    if (found.empty()) return 0;
+    for (const Offender& o : found)
+      if (o.edgeA >= 0) x.row(o.vertex) = o.target.transpose();
+  }
+  return countInside(x, participants);
+}
+
+int NonOverlap::countInside(const Eigen::MatrixX2d& x, const std::vector<int>& participants) const {
+  return static_cast<int>(offenders(x, participants, false).size());
+}
+
+}  // namespace ib

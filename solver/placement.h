@@ -1,0 +1,38 @@
+// Placement: ARAP, cohesive and non-overlap energies do not see where a shape is, only its
+// form, so a rigid motion of any independently moving group of vertices is free. The solver
+// fixes it with a weak tie to the linear blend of the keys, Xbar(w) = sum_i w_i X_i:
+//   E_P = mu/2 sum_v m_v |x_v - Xbar_v|^2     (m_v: lumped vertex area, mu small)
+// and, every iteration, moves each group by the rigid motion that minimizes E_P (weighted
+// Procrustes), which leaves the other energies unchanged. At w = e_i the minimizer is X_i
+// itself, where it was drawn; inbetweens depend only on w, so they cannot drift.
+#pragma once
+
+#include <Eigen/Core>
+#include <utility>
+#include <vector>
+
+namespace ib {
+
+// Groups of vertices that move rigidly together: connected components of the mesh edges plus
+// extra links (active cohesive pairs, non-overlap contacts). Union-find, O(n alpha(n)).
+class PlacementGroups {
+ public:
+  PlacementGroups(int vertexCount, const std::vector<std::pair<int, int>>& meshEdges);
+  // Group label per vertex (0..groupCount()-1) with the extra links joined in.
+  void update(const std::vector<std::pair<int, int>>& links);
+  const std::vector<int>& label() const { return label_; }
+  int groupCount() const { return groupCount_; }
+
+ private:
+  std::vector<int> meshComponent_;  // component label from mesh edges alone
+  int meshComponents_ = 0;
+  std::vector<int> label_;
+  int groupCount_ = 0;
+};
+
+// Applies, per group, the rigid motion (rotation + translation) minimizing
+// sum_v m_v |R x_v + t - target_v|^2. x, target: n x 2; mass: n x 1, positive.
+void alignGroups(Eigen::MatrixX2d& x, const Eigen::MatrixX2d& target, const Eigen::VectorXd& mass,
+                 const PlacementGroups& groups);
+
+}  // namespace ib

@@ -1,0 +1,215 @@
+#include "error.h"
+#include "fixtures.h"
+#include "interpolator.h"
+
+#include <Eigen/Dense>
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <random>
+
+using namespace ib;
+
+namespace {
+
+SolverOptions tight() {
+  SolverOptions o;
+  o.relativeTolerance = 1e-10;
+  o.maxIterations = 3000;
+  return o;
+}
+
+Eigen::VectorXd unit(int m, int i) {
+  Eigen::VectorXd w = Eigen::VectorXd::Zero(m);
+  w(i) = 1;
+  return w;
+}
+
+// Rotation angle of y relative to x (both n x 2), by centred Procrustes.
+double relativeAngle(const Eigen::MatrixX2d& x, const Eigen::MatrixX2d& y) {
+  const Eigen::RowVector2d cx = x.colwise().mean(), cy = y.colwise().mean();
+  double dot = 0, cross = 0;
+  for (int v = 0; v < x.rows(); ++v) {
+    const Eigen::RowVector2d p = x.row(v) - cx, q = y.row(v) - cy;
+    dot += p.dot(q);
+    cross += p.x() * q.y() - p.y() * q.x();
+  }
+  return std::atan2(cross, dot);
+}
+
+// Mean distortion sum_i w_i |F_i - R|^2 over triangles in [first, last), unweighted by kappa.
+double distortion(const Multimesh& mesh, const Eigen::MatrixX2d& x, const Eigen::VectorXd& w, int first, int last) {
+  const auto tris = mesh.triangles();
+  double total = 0;
+  for (int i = 0; i < mesh.keyCount(); ++i) {
+    const Eigen::MatrixX2d X = mesh.keyPositions(i);
+    for (int k = first; k < last; ++k) {
+      const auto& t = tris[k];
+      Eigen::Matrix2d D, Dr;
+      D << x(t[1], 0) - x(t[0], 0), x(t[2], 0) - x(t[0], 0), x(t[1], 1) - x(t[0], 1), x(t[2], 1) - x(t[0], 1);
+      Dr << X(t[1], 0) - X(t[0], 0), X(t[2], 0) - X(t[0], 0), X(t[1], 1) - X(t[0], 1), X(t[2], 1) - X(t[0], 1);
+      const Eigen::Matrix2d F = D * Dr.inverse();
+      total += w(i) * (F - closestRotation(F)).squaredNorm();
+    }
+  }
+  return total / (last - first);
+}
+
+}  // namespace
+
+TEST_CASE("interpolation: w = e_i reproduces key i where it was drawn, on every fixture") {
+  for (const auto& f : test::allFixtures()) {
+    const int m = f.mesh.keyCount();
+    Interpolator solver(f.mesh, {}, tight());
+    for (int i = 0; i < m; ++i) {
+      INFO(f.name << ", key " << i);
+      // Start far away: from the next key's drawing, so the solve has real work to do.
+      const Eigen::MatrixX2d start = f.mesh.keyPositions((i + 1) % m);
+      const InterpolationResult r = solver.solve(unit(m, i), &start);
+      REQUIRE(r.converged);
+      REQUIRE((r.x - f.mesh.keyPositions(i)).cwiseAbs().maxCoeff() <= 1e-6 * f.size);
+    }
+  }
+}
+
+TEST_CASE("interpolation: keys related by a rigid motion give rigid inbetweens between the placements") {
+  const auto f = test::strip(200, 1);
+  const Eigen::MatrixX2d X0 = f.mesh.keyPositions(0);
+  const double angle = 1.2;
+  Eigen::Matrix2d R;
+  R << std::cos(angle), -std::sin(angle), std::sin(angle), std::cos(angle);
+  const Eigen::RowVector2d shift(3.0, -1.5);
+  const Eigen::MatrixX2d X1 = (X0 * R.transpose()).rowwise() + shift;
+  Multimesh mesh = f.mesh;
+  mesh.addKey(X1, {}, mesh.boundaryVertices(0));
+  Interpolator solver(mesh, {}, tight());
+  InterpolationResult previous = solver.solve(unit(2, 0));
+  double previousAngle = 0;
+  for (double s = 0.1; s < 0.95; s += 0.1) {
+    INFO("s = " << s);
+    const Eigen::Vector2d w(1 - s, s);
+    previous = solver.solve(w, &previous.x);
+    REQUIRE(previous.converged);
+    // Zero ARAP energy: the inbetween is congruent to the key (energy in normalized units).
+    REQUIRE(previous.interpolationEnergy < 1e-10);
+    // Between the placements: centroid on the segment, rotation between 0 and the key's angle,
+    // increasing with s.
+    const Eigen::RowVector2d centroid = previous.x.colwise().mean();
+    const Eigen::RowVector2d expected = (1 - s) * X0.colwise().mean() + s * X1.colwise().mean();
+    REQUIRE((centroid - expected).norm() < 1e-6 * f.size);
+    const double a = relativeAngle(X0, previous.x);
+    REQUIRE(a > previousAngle);
+    REQUIRE(a < angle);
+    previousAngle = a;
+  }
+}
+
+TEST_CASE("interpolation: inbetweens move continuously with w, without drift on a round trip") {
+  const auto f = test::strip(300, 2);
+  Interpolator solver(f.mesh, {}, SolverOptions{});
+  std::vector<Eigen::MatrixX2d> forward;
+  InterpolationResult r = solver.solve(unit(2, 0));
+  const int frames = 20;
+  for (int k = 0; k <= frames; ++k) {
+    const double s = double(k) / frames;
+    r = solver.solve(Eigen::Vector2d(1 - s, s), &r.x);
+    forward.push_back(r.x);
+  }
+  double largestJump = 0;
+  for (int k = 1; k <= frames; ++k) largestJump = std::max(largestJump, (forward[k] - forward[k - 1]).cwiseAbs().maxCoeff());
+  // A 180-degree bend over 20 frames moves a vertex by at most ~pi * length / 20 per frame.
+  REQUIRE(largestJump < 0.25 * f.size);
+  // Back again: the same w gives the same frame, whatever path led there.
+  for (int k = frames; k >= 0; --k) {
+    const double s = double(k) / frames;
+    r = solver.solve(Eigen::Vector2d(1 - s, s), &r.x);
+    INFO("s = " << s);
+    REQUIRE((r.x - forward[k]).cwiseAbs().maxCoeff() < 2e-3 * f.size);
+  }
+}
+
+TEST_CASE("interpolation: stiffer triangles deform less") {
+  // A strip and the same strip bent almost into a circle: their blend is not a flat metric, so
+  // the inbetween must distort somewhere, and kappa decides where.
+  const GridMesh g = rectangleGrid(40, 10, 4.0, 1.0);
+  Multimesh uniform(static_cast<int>(g.points.rows()), g.triangles);
+  uniform.addKey(g.points, {}, g.boundary);
+  uniform.addKey(bendStrip(g.points, 1.9 * M_PI), {}, g.boundary);
+  std::vector<int> left, right;
+  Multimesh stiffLeft = uniform;
+  for (int k = 0; k < uniform.triangleCount(); ++k) {
+    const auto& t = g.triangles[k];
+    const bool isLeft = (g.points(t[0], 0) + g.points(t[1], 0) + g.points(t[2], 0)) / 3 < 2.0;
+    (isLeft ? left : right).push_back(k);
+    if (isLeft) stiffLeft.setStiffness(k, 50.0);
+  }
+  const Eigen::Vector2d w(0.5, 0.5);
+  const auto measure = [&](const Multimesh& mesh, const std::vector<int>& which) {
+    const Eigen::MatrixX2d x = Interpolator(mesh, {}, tight()).solve(w).x;
+    double total = 0;
+    for (int k : which) total += distortion(mesh, x, w, k, k + 1);
+    return total / which.size();
+  };
+  const double uniformLeft = measure(uniform, left), uniformRight = measure(uniform, right);
+  const double stiffLeftLeft = measure(stiffLeft, left), stiffLeftRight = measure(stiffLeft, right);
+  INFO("uniform: left " << uniformLeft << " right " << uniformRight << "; stiff left: left " << stiffLeftLeft
+                        << " right " << stiffLeftRight);
+  REQUIRE(stiffLeftLeft < 0.97 * uniformLeft);
+  REQUIRE(stiffLeftRight > 1.03 * uniformRight);
+  REQUIRE(stiffLeftLeft < 0.9 * stiffLeftRight);
+}
+
+TEST_CASE("interpolation: analytic gradients agree with central finite differences") {
+  // ARAP, placement tie and cohesive terms, including P's dependence on x when alpha != 1/2.
+  const double alpha = GENERATE(0.2, 0.5, 0.9);
+  auto f = test::gluedSquares(5, 1.0, 0.3);
+  InterpolationParams params;
+  params.cohesive.alpha = alpha;
+  params.cohesive.tau = 1e9;
+  Interpolator solver(f.mesh, params, SolverOptions{});
+  const Eigen::Vector2d w(0.6, 0.4);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> jitter(-0.05, 0.05);
+  Eigen::MatrixX2d x = 0.6 * f.mesh.keyPositions(0) + 0.4 * f.mesh.keyPositions(1);
+  for (int v = 0; v < x.rows(); ++v) x.row(v) += Eigen::RowVector2d(jitter(rng), jitter(rng));
+  const EnergyEvaluation at = solver.evaluate(x, w);
+  const double h = 1e-6;
+  for (int v = 0; v < x.rows(); v += 3)
+    for (int d = 0; d < 2; ++d) {
+      Eigen::MatrixX2d plus = x, minus = x;
+      plus(v, d) += h;
+      minus(v, d) -= h;
+      const double numeric = (solver.evaluate(plus, w).energy - solver.evaluate(minus, w).energy) / (2 * h);
+      INFO("alpha " << alpha << " vertex " << v << " coordinate " << d);
+      REQUIRE(at.gradient(v, d) == Approx(numeric).margin(1e-6 * at.gradient.cwiseAbs().maxCoeff()).epsilon(1e-5));
+    }
+}
+
+TEST_CASE("interpolation: bad weights are input errors, never NaN output") {
+  const auto f = test::strip(100, 2);
+  Interpolator solver(f.mesh, {}, SolverOptions{});
+  REQUIRE_THROWS_WITH(solver.solve(Eigen::Vector3d(0.2, 0.3, 0.5)), Catch::Contains("expected 2 values"));
+  REQUIRE_THROWS_WITH(solver.solve(Eigen::Vector2d(1.5, -0.5)), Catch::Contains("w[1]") && Catch::Contains("negative"));
+  REQUIRE_THROWS_WITH(solver.solve(Eigen::Vector2d(std::nan(""), 1.0)), Catch::Contains("w[0] is not a finite"));
+  REQUIRE_THROWS_WITH(solver.solve(Eigen::Vector2d(0.5, 0.4)), Catch::Contains("sum to"));
+  Eigen::MatrixX2d badStart = f.mesh.keyPositions(0);
+  badStart(3, 0) = std::numeric_limits<double>::infinity();
+  REQUIRE_THROWS_AS(solver.solve(Eigen::Vector2d(0.5, 0.5), &badStart), InputError);
+}
+
+TEST_CASE("interpolation: out-of-range parameters name the parameter") {
+  const auto f = test::strip(100, 2);
+  InterpolationParams p;
+  p.cohesive.alpha = 1.5;
+  REQUIRE_THROWS_WITH(Interpolator(f.mesh, p, SolverOptions{}), Catch::Contains("alpha"));
+  p = {};
+  p.cohesive.tau = 0;
+  REQUIRE_THROWS_WITH(Interpolator(f.mesh, p, SolverOptions{}), Catch::Contains("tau"));
+  SolverOptions o;
+  o.relativeTolerance = 0;
+  REQUIRE_THROWS_WITH(Interpolator(f.mesh, {}, o), Catch::Contains("relativeTolerance"));
+  o = {};
+  o.maxIterations = 0;
+  REQUIRE_THROWS_WITH(Interpolator(f.mesh, {}, o), Catch::Contains("maxIterations"));
+  Multimesh empty(4, {{0, 1, 2}, {0, 2, 3}});
+  REQUIRE_THROWS_WITH(Interpolator(empty, {}, SolverOptions{}), Catch::Contains("m = 0"));
+}
