@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -18,13 +19,15 @@ namespace ib {
 namespace {
 
 constexpr const char* kBenchUsage =
-    "usage: inbetween bench interp [--sizes LIST] [--keys LIST] [--frames N] [--threads N] [--no-baseline]\n"
+    "usage: inbetween bench interp [--sizes LIST] [--keys LIST] [--frames N] [--repeats N] [--threads N]\n"
+    "                              [--no-baseline]\n"
     "\n"
     "Interpolation solver on strips built in code (rest, 180-degree bend, stretch, wave keys).\n"
     "One JSON line per (vertices, keys) case:\n"
-    "  ms_per_iter         one accelerated local-global iteration (local step + global solve)\n"
+    "  ms_per_iter         one accelerated iteration (local step + global solve), over the sweep\n"
+    "                      below, factorizations excluded\n"
     "  iters_to_converge   mean iterations per warm-started frame to relative residual 1e-3\n"
-    "  ms_per_frame        mean wall time of those frames, refactorizations included\n"
+    "  ms_per_frame        mean wall time of those frames (each at a new w), factorizations included\n"
     "  iters_to_energy_1e-3 / plain_iters_to_energy_1e-3\n"
     "                      iterations from key 0's drawing (a far start) until the energy is within\n"
     "                      1e-3 of the optimum, accelerated vs plain local-global (exact matrix,\n"
@@ -33,6 +36,7 @@ constexpr const char* kBenchUsage =
     "  --sizes LIST    approximate vertex counts, e.g. 1k,10k,100k (default)\n"
     "  --keys LIST     key counts, each 1..4 (default 2,4)\n"
     "  --frames N      frames in the warm-started sweep (default 24)\n"
+    "  --repeats N     sweeps per case; times are their medians (default 3)\n"
     "  --threads N     threads (default: all cores)\n"
     "  --no-baseline   skip the plain local-global comparison (slow at 100k)\n";
 
@@ -88,7 +92,45 @@ void progress(const std::string& text) {
   if (isatty(STDERR_FILENO)) std::fprintf(stderr, "\r\033[K%s", text.c_str());
 }
 
-nlohmann::json benchCase(int vertices, int keys, int frames, int threads, bool baseline) {
+// One warm-started sweep of `frames` frames after a cold solve at s = 0.
+struct Sweep {
+  double msPerFrame = 0, msPerIter = 0, maxMs = 0, itersPerFrame = 0, firstSolveMs = 0, factorMs = 0;
+  int factorizations = 0, unconverged = 0;
+};
+
+Sweep runSweep(const Multimesh& mesh, const InterpolationParams& params, const SolverOptions& options, int keys,
+               int frames, const std::string& label) {
+  Interpolator solver(mesh, params, options);
+  Sweep out;
+  const auto started = Clock::now();
+  InterpolationResult previous = solver.solve(sweepWeights(keys, 0));
+  out.firstSolveMs = millisecondsSince(started);
+  double totalMs = 0, factorMs = 0;
+  long iterations = 0;
+  for (int f = 1; f <= frames; ++f) {
+    progress(label + ": frame " + std::to_string(f) + "/" + std::to_string(frames));
+    previous = solver.solve(sweepWeights(keys, double(f) / frames), &previous.x);
+    totalMs += previous.milliseconds;
+    factorMs += previous.factorMilliseconds;
+    out.maxMs = std::max(out.maxMs, previous.milliseconds);
+    iterations += previous.iterations;
+    out.factorizations += previous.factorizations;
+    out.unconverged += !previous.converged;
+  }
+  out.msPerFrame = totalMs / frames;
+  out.msPerIter = (totalMs - factorMs) / std::max(1L, iterations);
+  out.itersPerFrame = double(iterations) / frames;
+  out.factorMs = out.factorizations ? factorMs / out.factorizations : 0.0;
+  return out;
+}
+
+template <class Get>
+double median(std::vector<Sweep> runs, Get get) {
+  std::sort(runs.begin(), runs.end(), [&](const Sweep& a, const Sweep& b) { return get(a) < get(b); });
+  return get(runs[runs.size() / 2]);
+}
+
+nlohmann::json benchCase(int vertices, int keys, int frames, int repeats, int threads, bool baseline) {
   const Multimesh mesh = benchmarkStrip(vertices, keys);
   InterpolationParams params;
   SolverOptions options;
@@ -96,47 +138,24 @@ nlohmann::json benchCase(int vertices, int keys, int frames, int threads, bool b
   const std::string label = std::to_string(mesh.vertexCount()) + " vertices, " + std::to_string(keys) + " keys";
   const Eigen::VectorXd middle = keys == 2 ? sweepWeights(2, 0.5) : sweepWeights(keys, 0.3);
 
-  // Per-iteration cost: a fixed number of accelerated iterations once H is factorized.
-  progress(label + ": iteration cost");
-  SolverOptions fixed = options;
-  fixed.relativeTolerance = 1e-14;
-  fixed.maxIterations = 30;
-  Interpolator perIteration(mesh, params, fixed);
-  const auto factorStart = Clock::now();
-  perIteration.solve(middle);
-  const double firstSolveMs = millisecondsSince(factorStart);
-  const InterpolationResult timed = perIteration.solve(middle);
-  const double msPerIter = timed.milliseconds / std::max(1, timed.iterations);
-
-  // Warm-started sweep at the default stopping rule.
-  Interpolator sweep(mesh, params, options);
-  InterpolationResult previous = sweep.solve(sweepWeights(keys, 0));
-  double totalMs = 0, maxMs = 0;
-  long totalIters = 0;
-  int refactorizations = 0, unconverged = 0;
-  for (int f = 1; f <= frames; ++f) {
-    progress(label + ": frame " + std::to_string(f) + "/" + std::to_string(frames));
-    previous = sweep.solve(sweepWeights(keys, double(f) / frames), &previous.x);
-    totalMs += previous.milliseconds;
-    maxMs = std::max(maxMs, previous.milliseconds);
-    totalIters += previous.iterations;
-    refactorizations += previous.factorizations;
-    unconverged += !previous.converged;
-  }
-
+  // Timings are medians over repeated sweeps: a shared machine's other load shows up as noise.
+  std::vector<Sweep> runs;
+  for (int r = 0; r < repeats; ++r) runs.push_back(runSweep(mesh, params, options, keys, frames, label));
+  const Sweep& any = runs.front();
   nlohmann::json out = {{"bench", "interp"},
                         {"vertices", mesh.vertexCount()},
                         {"keys", keys},
-                        {"ms_per_iter", msPerIter},
-                        {"iters_to_converge", double(totalIters) / frames},
-                        {"ms_per_frame", totalMs / frames},
-                        {"threads", sweep.threads()},
+                        {"ms_per_iter", median(runs, [](const Sweep& s) { return s.msPerIter; })},
+                        {"iters_to_converge", any.itersPerFrame},
+                        {"ms_per_frame", median(runs, [](const Sweep& s) { return s.msPerFrame; })},
+                        {"threads", Interpolator(mesh, params, options).threads()},
                         {"frames", frames},
-                        {"ms_per_frame_max", maxMs},
-                        {"refactorizations", refactorizations},
-                        {"unconverged_frames", unconverged},
-                        {"first_solve_ms", firstSolveMs},
-                        {"factor_nonzeros", sweep.factorNonZeros()}};
+                        {"repeats", repeats},
+                        {"ms_per_frame_max", median(runs, [](const Sweep& s) { return s.maxMs; })},
+                        {"factorizations", any.factorizations},
+                        {"ms_per_factorization", median(runs, [](const Sweep& s) { return s.factorMs; })},
+                        {"unconverged_frames", any.unconverged},
+                        {"first_solve_ms", median(runs, [](const Sweep& s) { return s.firstSolveMs; })}};
 
   if (baseline) {
     progress(label + ": optimum and plain local-global baseline");
@@ -171,7 +190,7 @@ int runBench(const std::vector<std::string>& args) {
   }
   if (args[0] != "interp") throw InputError("bench: unknown case '" + args[0] + "' (available: interp)");
   const cli::Arguments a("bench", std::vector<std::string>(args.begin() + 1, args.end()),
-                         {"sizes", "keys", "frames", "threads"}, {"no-baseline", "help"});
+                         {"sizes", "keys", "frames", "repeats", "threads"}, {"no-baseline", "help"});
   if (a.flag("help")) {
     std::fputs(kBenchUsage, stdout);
     return 0;
@@ -180,10 +199,11 @@ int runBench(const std::vector<std::string>& args) {
   const std::vector<int> sizes = parseList(a.value("sizes", "1k,10k,100k"), "sizes", 16, 2000000);
   const std::vector<int> keyCounts = parseList(a.value("keys", "2,4"), "keys", 1, 4);
   const int frames = a.integer("frames", 24, 1, 100000);
+  const int repeats = a.integer("repeats", 3, 1, 100);
   const int threads = a.integer("threads", 0, 0, 1024);
   for (int vertices : sizes)
     for (int keys : keyCounts) {
-      const nlohmann::json line = benchCase(vertices, keys, frames, threads, !a.flag("no-baseline"));
+      const nlohmann::json line = benchCase(vertices, keys, frames, repeats, threads, !a.flag("no-baseline"));
       std::printf("%s\n", line.dump().c_str());
       std::fflush(stdout);
     }

@@ -1,53 +1,82 @@
 #include "anderson.h"
 
 #include <Eigen/Dense>
+#include <vector>
 
 namespace ib {
 
-AndersonAcceleration::AndersonAcceleration(int depth) : depth_(depth < 0 ? 0 : depth) {}
+AndersonAcceleration::AndersonAcceleration(int depth, int threads)
+    : depth_(depth < 0 ? 0 : depth), threads_(threads < 1 ? 1 : threads) {}
 
 void AndersonAcceleration::reset() {
   stored_ = 0;
   newest_ = -1;
-  previousF_.resize(0);
-  previousG_.resize(0);
+  havePrevious_ = false;
 }
 
-void AndersonAcceleration::restart() {
-  previousF_.resize(0);
-  previousG_.resize(0);
-}
+void AndersonAcceleration::restart() { havePrevious_ = false; }
 
-Eigen::VectorXd AndersonAcceleration::next(const Eigen::VectorXd& x, const Eigen::VectorXd& gx) {
+Eigen::VectorXd AndersonAcceleration::next(const Eigen::VectorXd& gx, const Eigen::VectorXd& f) {
   if (depth_ == 0) return gx;
-  const Eigen::VectorXd f = gx - x;
-  if (dF_.rows() != x.size()) {
-    dF_.resize(x.size(), depth_);
-    dG_.resize(x.size(), depth_);
+  const Eigen::Index size = f.size();
+  if (dF_.rows() != size) {
+    dF_.resize(size, depth_);
+    dG_.resize(size, depth_);
     gram_.resize(depth_, depth_);
+    previousF_.resize(size);
+    previousG_.resize(size);
     reset();
   }
-  if (previousF_.size() == x.size()) {
+  const bool append = havePrevious_;
+  if (append) {
     newest_ = (newest_ + 1) % depth_;
-    dF_.col(newest_) = f - previousF_;
-    dG_.col(newest_) = gx - previousG_;
     if (stored_ < depth_) ++stored_;
-    for (int j = 0; j < stored_; ++j) gram_(newest_, j) = gram_(j, newest_) = dF_.col(j).dot(dF_.col(newest_));
   }
-  previousF_ = f;
-  previousG_ = gx;
-  if (stored_ == 0) return gx;
+  // One pass: store the new differences, update row `newest_` of the Gram matrix, form
+  // dF^T f, and remember (f, G(x)) for the next call.
+  const int cols = stored_, fresh = newest_;
+  std::vector<double> sums(2 * static_cast<size_t>(depth_), 0.0);  // [gram row | dF^T f]
+#pragma omp parallel num_threads(threads_)
+  {
+    std::vector<double> local(2 * static_cast<size_t>(depth_), 0.0);
+#pragma omp for schedule(static)
+    for (Eigen::Index i = 0; i < size; ++i) {
+      double* dFrow = dF_.row(i).data();
+      if (append) {
+        dFrow[fresh] = f(i) - previousF_(i);
+        dG_(i, fresh) = gx(i) - previousG_(i);
+        for (int j = 0; j < cols; ++j) local[j] += dFrow[j] * dFrow[fresh];
+      }
+      for (int j = 0; j < cols; ++j) local[depth_ + j] += dFrow[j] * f(i);
+      previousF_(i) = f(i);
+      previousG_(i) = gx(i);
+    }
+#pragma omp critical
+    for (size_t j = 0; j < sums.size(); ++j) sums[j] += local[j];
+  }
+  havePrevious_ = true;
+  if (cols == 0) return gx;
+  if (append)
+    for (int j = 0; j < cols; ++j) gram_(fresh, j) = gram_(j, fresh) = sums[j];
 
-  const auto F = dF_.leftCols(stored_);
-  Eigen::MatrixXd normal = gram_.topLeftCorner(stored_, stored_);
+  Eigen::MatrixXd normal = gram_.topLeftCorner(cols, cols);
   // Tikhonov regularization keeps nearly dependent histories from blowing up gamma.
   normal.diagonal().array() += 1e-10 * normal.trace() + 1e-300;
-  const Eigen::VectorXd gamma = normal.ldlt().solve(F.transpose() * f);
+  const Eigen::VectorXd rhs = Eigen::Map<const Eigen::VectorXd>(sums.data() + depth_, cols);
+  const Eigen::VectorXd gamma = normal.ldlt().solve(rhs);
   if (!gamma.allFinite()) {
     reset();
     return gx;
   }
-  return gx - dG_.leftCols(stored_) * gamma;
+  Eigen::VectorXd out(size);
+#pragma omp parallel for schedule(static) num_threads(threads_)
+  for (Eigen::Index i = 0; i < size; ++i) {
+    const double* dGrow = dG_.row(i).data();
+    double v = gx(i);
+    for (int j = 0; j < cols; ++j) v -= dGrow[j] * gamma(j);
+    out(i) = v;
+  }
+  return out;
 }
 
 }  // namespace ib

@@ -1,33 +1,38 @@
 // Anderson acceleration (type II, Walker & Ni 2011) of a fixed-point map G, as used for
-// local-global solvers by Peng et al. 2018: from the last `depth` iterates x_k and their images
-// G(x_k), the next iterate is G(x_k) - dG gamma, with gamma minimizing |f_k - dF gamma|, f = G(x) - x.
+// local-global solvers by Peng et al. 2018: from the last `depth` iterates x_k, their images
+// G(x_k) and residuals f_k, the next iterate is G(x_k) - dG gamma, with gamma minimizing
+// |f_k - dF gamma|. The residual is any vector that vanishes at the fixed point; the solver passes
+// the energy gradient, the quantity its stopping rule measures (the usual f = G(x) - x is the
+// preconditioned gradient, which underweights the high-frequency error the rule sees).
 // The caller safeguards it: an accelerated iterate that raises the energy is rejected and the
 // history reset.
 #pragma once
 
 #include <Eigen/Core>
-#include <vector>
 
 namespace ib {
 
 class AndersonAcceleration {
  public:
-  explicit AndersonAcceleration(int depth);
+  // depth: history length (0 disables acceleration); threads: for the O(size) passes.
+  AndersonAcceleration(int depth, int threads);
 
   void reset();
   // Keeps the stored differences but forgets the last iterate, for a new but similar map
   // (the next frame): the old secant information then seeds the first steps.
   void restart();
-  // x: current iterate, gx: G(x) (same size). Returns the accelerated next iterate; with no
-  // history yet (or depth 0) that is gx itself.
-  Eigen::VectorXd next(const Eigen::VectorXd& x, const Eigen::VectorXd& gx);
+  // gx: G(x) for the current iterate x; residual: its residual (same size). Returns the
+  // accelerated next iterate; with no history yet (or depth 0) that is gx itself.
+  Eigen::VectorXd next(const Eigen::VectorXd& gx, const Eigen::VectorXd& residual);
 
  private:
-  int depth_;
+  using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+  int depth_, threads_;
   int stored_ = 0, newest_ = -1;
+  bool havePrevious_ = false;
   Eigen::VectorXd previousF_, previousG_;
-  Eigen::MatrixXd dF_, dG_;  // size x depth, ring buffers of differences
-  Eigen::MatrixXd gram_;     // depth x depth, dF^T dF kept up to date column by column
+  RowMajor dF_, dG_;        // size x depth ring buffers of differences, one row per entry
+  Eigen::MatrixXd gram_;    // depth x depth, dF^T dF kept up to date column by column
 };
 
 }  // namespace ib

@@ -45,8 +45,11 @@ DeformationEnergy::DeformationEnergy(const std::vector<Triangle>& triangles, con
     : triangles_(triangles), keyCount_(static_cast<int>(keys.size())) {
   const int t = triangleCount(), m = keyCount_;
   const int n = keys.empty() ? 0 : static_cast<int>(keys[0].rows());
-  restInverse_.resize(static_cast<size_t>(t) * m);
-  weight_.resize(static_cast<size_t>(t) * m);
+  rest_.resize(static_cast<size_t>(t) * m * 5);
+  for (int c = 0; c < 3; ++c) {
+    corner_[c].resize(t);
+    for (int k = 0; k < t; ++k) corner_[c][k] = triangles_[k][c];
+  }
   lumpedArea_ = Eigen::VectorXd::Zero(n);
   for (int k = 0; k < t; ++k) {
     for (int i = 0; i < m; ++i) {
@@ -54,8 +57,13 @@ DeformationEnergy::DeformationEnergy(const std::vector<Triangle>& triangles, con
       const double area = 0.5 * D.determinant();
       if (!(area > 0))
         throw InputError("triangle " + std::to_string(k) + " is degenerate or inverted in key " + std::to_string(i));
-      restInverse_[k * m + i] = D.inverse();
-      weight_[k * m + i] = kappa(k) * area;
+      const Eigen::Matrix2d B = D.inverse();
+      double* r = rest_.data() + static_cast<size_t>(i) * 5 * t;
+      r[k] = B(0, 0);
+      r[t + k] = B(1, 0);
+      r[2 * t + k] = B(0, 1);
+      r[3 * t + k] = B(1, 1);
+      r[4 * t + k] = kappa(k) * area;
       for (int v : triangles_[k]) lumpedArea_(v) += area / (3.0 * m);
     }
   }
@@ -73,59 +81,82 @@ std::vector<Eigen::Matrix2d> DeformationEnergy::metrics(const ActiveKeys& keys) 
   std::vector<Eigen::Matrix2d> M(triangles_.size(), Eigen::Matrix2d::Zero());
   for (int k = 0; k < triangleCount(); ++k)
     for (size_t a = 0; a < keys.index.size(); ++a) {
-      const int i = keys.index[a];
-      const Eigen::Matrix2d& B = restInverse_[k * keyCount_ + i];
-      M[k] += 2.0 * keys.weight[a] * weight_[k * keyCount_ + i] * B * B.transpose();
+      const int t = triangleCount();
+      const double* r = rest_.data() + static_cast<size_t>(keys.index[a]) * 5 * t;
+      Eigen::Matrix2d B;
+      B << r[k], r[2 * t + k], r[t + k], r[3 * t + k];
+      M[k] += 2.0 * keys.weight[a] * r[4 * t + k] * B * B.transpose();
     }
   return M;
 }
 
 double DeformationEnergy::evaluate(const Eigen::MatrixX2d& x, const ActiveKeys& keys, Eigen::MatrixX2d& gradient,
                                    int threads) const {
-  const int t = triangleCount(), m = keyCount_, n = static_cast<int>(x.rows());
+  const int t = triangleCount(), n = static_cast<int>(x.rows());
   const int active = static_cast<int>(keys.index.size());
-  // Interleaved copy of x so a triangle's corners are three cache-friendly reads.
-  interleaved_.resize(2 * static_cast<size_t>(n));
-  for (int v = 0; v < n; ++v) {
-    interleaved_[2 * v] = x(v, 0);
-    interleaved_[2 * v + 1] = x(v, 1);
-  }
-  const double* p = interleaved_.data();
-  blocks_.resize(t);  // dW_D / dD_t per triangle
+  const double* px = x.col(0).data();
+  const double* py = x.col(1).data();
+  // Per-triangle gradient blocks dW_D/dD_t, one array per entry so the loop vectorizes.
+  blocks_.resize(4 * static_cast<size_t>(t));
+  double* G00 = blocks_.data();
+  double* G10 = G00 + t;
+  double* G01 = G10 + t;
+  double* G11 = G01 + t;
+  const int* c0 = corner_[0].data();
+  const int* c1 = corner_[1].data();
+  const int* c2 = corner_[2].data();
   double energy = 0;
-#pragma omp parallel for schedule(static) reduction(+ : energy) num_threads(threads)
-  for (int k = 0; k < t; ++k) {
-    const Triangle& tri = triangles_[k];
-    const double* p0 = p + 2 * tri[0];
-    const double* p1 = p + 2 * tri[1];
-    const double* p2 = p + 2 * tri[2];
-    Eigen::Matrix2d D;
-    D << p1[0] - p0[0], p2[0] - p0[0], p1[1] - p0[1], p2[1] - p0[1];
-    Eigen::Matrix2d G = Eigen::Matrix2d::Zero();
+#pragma omp parallel num_threads(threads) reduction(+ : energy)
+  {
+#pragma omp for schedule(static)
+    for (int k = 0; k < t; ++k) G00[k] = G10[k] = G01[k] = G11[k] = 0.0;
     for (int a = 0; a < active; ++a) {
-      const int idx = k * m + keys.index[a];
-      const Eigen::Matrix2d& B = restInverse_[idx];
-      const Eigen::Matrix2d F = D * B;
-      const Eigen::Matrix2d diff = F - closestRotation(F);
-      const double c = keys.weight[a] * weight_[idx];
-      energy += c * diff.squaredNorm();
-      G.noalias() += (2.0 * c) * diff * B.transpose();
-    }
-    blocks_[k] = G;
-  }
-#pragma omp parallel for schedule(static) num_threads(threads)
-  for (int v = 0; v < n; ++v) {
-    double gx = 0, gy = 0;
-    for (int e = incidenceStart_[v]; e < incidenceStart_[v + 1]; ++e) {
-      const double* G = blocks_[incidence_[e] / 3].data();  // column-major: G00 G10 G01 G11
-      switch (incidence_[e] % 3) {
-        case 0: gx -= G[0] + G[2]; gy -= G[1] + G[3]; break;
-        case 1: gx += G[0]; gy += G[1]; break;
-        default: gx += G[2]; gy += G[3]; break;
+      const double* r = rest_.data() + static_cast<size_t>(keys.index[a]) * 5 * t;  // B00 B10 B01 B11 c
+      const double* b00 = r;
+      const double* b10 = r + t;
+      const double* b01 = r + 2 * t;
+      const double* b11 = r + 3 * t;
+      const double* cw = r + 4 * t;
+      const double w = keys.weight[a];
+#pragma omp for simd schedule(static)
+      for (int k = 0; k < t; ++k) {
+        // D = [x1 - x0, x2 - x0] (columns); F = D B.
+        const double d00 = px[c1[k]] - px[c0[k]], d01 = px[c2[k]] - px[c0[k]];
+        const double d10 = py[c1[k]] - py[c0[k]], d11 = py[c2[k]] - py[c0[k]];
+        const double f00 = d00 * b00[k] + d01 * b10[k], f01 = d00 * b01[k] + d01 * b11[k];
+        const double f10 = d10 * b00[k] + d11 * b10[k], f11 = d10 * b01[k] + d11 * b11[k];
+        // Closest rotation: (cos, sin) along (f00 + f11, f10 - f01).
+        const double sc = f00 + f11, sn = f10 - f01, norm2 = sc * sc + sn * sn;
+        const bool ok = norm2 > 1e-300;
+        const double inv = 1.0 / std::sqrt(ok ? norm2 : 1.0);
+        const double c = ok ? sc * inv : 1.0, s = ok ? sn * inv : 0.0;
+        const double e00 = f00 - c, e01 = f01 + s, e10 = f10 - s, e11 = f11 - c;  // F - R
+        const double weight = w * cw[k];
+        energy += weight * (e00 * e00 + e01 * e01 + e10 * e10 + e11 * e11);
+        // G += 2 w c (F - R) B^T.
+        const double two = 2.0 * weight;
+        G00[k] += two * (e00 * b00[k] + e01 * b01[k]);
+        G01[k] += two * (e00 * b10[k] + e01 * b11[k]);
+        G10[k] += two * (e10 * b00[k] + e11 * b01[k]);
+        G11[k] += two * (e10 * b10[k] + e11 * b11[k]);
       }
     }
-    gradient(v, 0) += gx;
-    gradient(v, 1) += gy;
+  }
+  double* gx = gradient.col(0).data();
+  double* gy = gradient.col(1).data();
+#pragma omp parallel for schedule(static) num_threads(threads)
+  for (int v = 0; v < n; ++v) {
+    double ax = 0, ay = 0;
+    for (int e = incidenceStart_[v]; e < incidenceStart_[v + 1]; ++e) {
+      const int k = incidence_[e] / 3;
+      switch (incidence_[e] % 3) {
+        case 0: ax -= G00[k] + G01[k]; ay -= G10[k] + G11[k]; break;
+        case 1: ax += G00[k]; ay += G10[k]; break;
+        default: ax += G01[k]; ay += G11[k]; break;
+      }
+    }
+    gx[v] += ax;
+    gy[v] += ay;
   }
   return energy;
 }

@@ -7,6 +7,7 @@
 #include "multimesh.h"
 
 #include <Eigen/Core>
+#include <array>
 #include <vector>
 
 namespace ib {
@@ -42,13 +43,14 @@ class DeformationEnergy {
  private:
   std::vector<Triangle> triangles_;
   int keyCount_ = 0;
-  std::vector<Eigen::Matrix2d> restInverse_;  // B_ti at [t * m + i]
-  std::vector<double> weight_;                // c_ti = kappa_t * area_ti at [t * m + i]
+  // Per key i, five arrays over triangles (structure of arrays, so the local step vectorizes):
+  // B_ti = D(X_i)^{-1} entries b00, b10, b01, b11, then c_ti = kappa_t * area_ti.
+  std::vector<double> rest_;                  // m x 5 x t
+  std::array<std::vector<int>, 3> corner_;    // vertex of each corner, per triangle
   std::vector<int> incidenceStart_;           // CSR over vertices of (triangle, corner)
   std::vector<int> incidence_;                // 3 * t + corner
   Eigen::VectorXd lumpedArea_;
-  mutable std::vector<Eigen::Matrix2d> blocks_;  // scratch: per-triangle gradient blocks
-  mutable std::vector<double> interleaved_;      // scratch: x as x0 y0 x1 y1 ...
+  mutable std::vector<double> blocks_;           // scratch: gradient blocks G00, G10, G01, G11 (4 x t)
 };
 
 // Rotation closest to F in the Frobenius norm (2D polar decomposition, valid for any F).

@@ -44,6 +44,13 @@ double infinityNorm(const Eigen::MatrixX2d& g) { return g.size() ? g.cwiseAbs().
 
 Eigen::Map<const Eigen::VectorXd> flat(const Eigen::MatrixX2d& x) { return {x.data(), x.size()}; }
 
+// Threads for a mesh of n vertices: below a few thousand vertices a thread's share of an
+// iteration is shorter than the cost of waking it, so small meshes run on one.
+int threadsFor(int requested, int vertices) {
+  if (vertices < 4000) return 1;
+  return requested > 0 ? requested : omp_get_max_threads();
+}
+
 }  // namespace
 
 void validateWeights(const Eigen::VectorXd& w, int keyCount) {
@@ -76,10 +83,10 @@ struct Interpolator::State {
 Interpolator::Interpolator(const Multimesh& mesh, const InterpolationParams& params, const SolverOptions& options)
     : params_(params),
       options_(options),
-      threads_(options.threads > 0 ? options.threads : omp_get_max_threads()),
-      groups_(validated(mesh).vertexCount(), meshEdges(mesh)),
-      factor_(options.threads > 0 ? options.threads : omp_get_max_threads()),
-      anderson_(options.andersonDepth) {
+      threads_(threadsFor(options.threads, validated(mesh).vertexCount())),
+      groups_(mesh.vertexCount(), meshEdges(mesh)),
+      factor_(threads_),
+      anderson_(options.andersonDepth, threads_) {
   validateOptions(params, options);
   const std::vector<Triangle> triangles = mesh.triangles();
   double meanArea = 0;
@@ -117,14 +124,22 @@ Interpolator::Frame Interpolator::makeFrame(const Eigen::VectorXd& w) const {
 }
 
 void Interpolator::evaluateState(const Frame& frame, State& s) const {
-  s.gradient = Eigen::MatrixX2d::Zero(vertexCount(), 2);
-  s.energy = deformation_->evaluate(s.x, frame.keys, s.gradient, threads_);
-  s.energy += cohesive_->evaluate(s.x, frame.w, s.gradient, s.active);
+  const int n = vertexCount();
+  s.gradient.resize(n, 2);
+  // E_P first: it also initializes the gradient.
   const double mu = options_.placementStiffness;
-  const Eigen::MatrixX2d offset = s.x - frame.blend;
-  s.placement = 0.5 * mu * (mass_.array() * offset.rowwise().squaredNorm().array()).sum();
-  s.energy += s.placement;
-  s.gradient += mu * (offset.array().colwise() * mass_.array()).matrix();
+  double placement = 0;
+#pragma omp parallel for schedule(static) reduction(+ : placement) num_threads(threads_)
+  for (int v = 0; v < n; ++v) {
+    const double dx = s.x(v, 0) - frame.blend(v, 0), dy = s.x(v, 1) - frame.blend(v, 1);
+    placement += mass_(v) * (dx * dx + dy * dy);
+    s.gradient(v, 0) = mu * mass_(v) * dx;
+    s.gradient(v, 1) = mu * mass_(v) * dy;
+  }
+  s.placement = 0.5 * mu * placement;
+  s.energy = s.placement;
+  s.energy += deformation_->evaluate(s.x, frame.keys, s.gradient, threads_);
+  s.energy += cohesive_->evaluate(s.x, frame.w, s.gradient, s.active);
   s.contacts.clear();
   if (params_.nonOverlap) s.energy += nonOverlap_->evaluate(s.x, frame.participants, s.gradient, s.contacts);
 }
@@ -137,7 +152,10 @@ void Interpolator::align(const Frame& frame, const State& reference, Eigen::Matr
       links.push_back({terms[j].pair.a, terms[j].pair.c});
       links.push_back({terms[j].pair.b, terms[j].pair.d});
     }
-  groups_.update(links);
+  if (links != groupLinks_) {
+    groups_.update(links);
+    groupLinks_ = std::move(links);
+  }
   alignGroups(x, frame.blend, mass_, groups_);
 }
 
@@ -175,14 +193,21 @@ Eigen::SparseMatrix<double> Interpolator::globalMatrix(const Eigen::VectorXd& w,
   return H;
 }
 
-bool Interpolator::ensureFactorization(const Eigen::VectorXd& w, const std::vector<char>& active) {
-  const bool fresh = factor_.factorized() && (w - factorWeights_).lpNorm<1>() <= options_.refactorDistance &&
-                     (options_.refactorDistance > 0 || w == factorWeights_) && active == factorActive_;
-  if (fresh) return false;
+void Interpolator::refactorize(const Eigen::VectorXd& w, const std::vector<char>& active, InterpolationResult& result) {
+  const auto started = std::chrono::steady_clock::now();
   factor_.factorize(globalMatrix(w, active));
   factorWeights_ = w;
   factorActive_ = active;
-  return true;
+  ++result.factorizations;
+  result.factorMilliseconds +=
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
+}
+
+void Interpolator::ensureFactorization(const Eigen::VectorXd& w, const std::vector<char>& active,
+                                       InterpolationResult& result) {
+  const bool fresh = factor_.factorized() && (w - factorWeights_).lpNorm<1>() <= options_.refactorDistance &&
+                     (options_.refactorDistance > 0 || w == factorWeights_) && active == factorActive_;
+  if (!fresh) refactorize(w, active, result);
 }
 
 EnergyEvaluation Interpolator::evaluate(const Eigen::MatrixX2d& x, const Eigen::VectorXd& w) const {
@@ -214,16 +239,16 @@ InterpolationResult Interpolator::solve(const Eigen::VectorXd& w, const Eigen::M
   evaluateState(frame, s);
 
   InterpolationResult result;
-  result.factorizations = ensureFactorization(w, s.active) ? 1 : 0;
+  ensureFactorization(w, s.active, result);
   result.startEnergy = s.energy;
   result.energyHistory.push_back(s.energy);
   const double startNorm = infinityNorm(s.gradient);
   const double slack = 1e-12 * std::abs(s.energy);
-  // The fixed-point map of this frame is close to the last one's unless H or the set of keys
-  // changed: then the secant history is reset, otherwise it seeds this frame.
-  if (result.factorizations > 0 || frame.keys.index != andersonKeys_) anderson_.reset();
+  // The fixed-point map of this frame is close to the last one's (it moves continuously with w,
+  // also where a weight reaches or leaves zero), so the secant history seeds this frame. A
+  // refactorized H changes the map more, but measurably less than dropping the history costs;
+  // the safeguard rejects any step the stale history gets wrong.
   anderson_.restart();
-  andersonKeys_ = frame.keys.index;
   // Converged when the gradient fell by the relative tolerance, or reached the absolute floor
   // where it is rounding noise (a start that is already a minimizer).
   const double target = std::max(options_.relativeTolerance * startNorm, gradientFloor_);
@@ -237,7 +262,7 @@ InterpolationResult Interpolator::solve(const Eigen::VectorXd& w, const Eigen::M
     factor_.solve(step);
     Eigen::MatrixX2d plain = s.x - step;
     align(frame, s, plain);
-    const Eigen::VectorXd accelerated = anderson_.next(flat(s.x), flat(plain));
+    const Eigen::VectorXd accelerated = anderson_.next(flat(plain), flat(s.gradient));
     candidate.x = Eigen::Map<const Eigen::MatrixX2d>(accelerated.data(), vertexCount(), 2);
     evaluateState(frame, candidate);
     ++result.evaluations;
@@ -251,10 +276,7 @@ InterpolationResult Interpolator::solve(const Eigen::VectorXd& w, const Eigen::M
     }
     if (!accepted && s.active != factorActive_) {
       // Cohesive pairs engaged or let go since H was built: H no longer models the energy.
-      factor_.factorize(globalMatrix(w, s.active));
-      factorWeights_ = w;
-      factorActive_ = s.active;
-      ++result.factorizations;
+      refactorize(w, s.active, result);
       anderson_.reset();
       continue;
     }

@@ -46,10 +46,11 @@ struct SolverOptions {
   double relativeTolerance = 1e-3;  // stop when |g|_inf / |g(x_start)|_inf < this (paper 7.1)
   int maxIterations = 500;          // iteration cap; reaching it is reported as not converged
   int andersonDepth = 10;           // Anderson history length; 0 = plain local-global
-  double refactorDistance = 0.5;    // refactorize H when |w - w_H|_1 exceeds this; 0 = exact H every frame
+  double refactorDistance = 1.0;    // refactorize H when |w - w_H|_1 exceeds this; 0 = exact H every frame
   double placementStiffness = 1e-5; // mu of the placement tie E_P (see placement.h), > 0
-  double nonOverlapStiffness = 10;  // W_O penalty k, relative to the mean diagonal of the ARAP matrix
+  double nonOverlapStiffness = 1;   // W_O penalty k, relative to the mean diagonal of the ARAP matrix
   int threads = 0;                  // threads for the local step and solves; 0 = all cores
+                                    // (meshes under 4000 vertices always run on one)
 };
 
 struct InterpolationResult {
@@ -62,6 +63,7 @@ struct InterpolationResult {
   double interpolationEnergy = 0;     // W_I alone at x (eq. 9), without the placement tie
   bool converged = false;             // residual below tolerance, or |g| at rounding level; never a small step
   int factorizations = 0;             // numeric factorizations of H during this solve
+  double factorMilliseconds = 0;      // their wall time, part of milliseconds
   double milliseconds = 0;            // wall time of this solve, factorization included
   std::vector<double> energyHistory;    // energy after each iteration (start first)
   std::vector<double> residualHistory;  // relative residual after each iteration (start first: 1)
@@ -100,7 +102,8 @@ class Interpolator {
   Frame makeFrame(const Eigen::VectorXd& w) const;
   void evaluateState(const Frame& frame, State& state) const;
   void align(const Frame& frame, const State& reference, Eigen::MatrixX2d& x);
-  bool ensureFactorization(const Eigen::VectorXd& w, const std::vector<char>& active);
+  void ensureFactorization(const Eigen::VectorXd& w, const std::vector<char>& active, InterpolationResult& result);
+  void refactorize(const Eigen::VectorXd& w, const std::vector<char>& active, InterpolationResult& result);
   Eigen::SparseMatrix<double> globalMatrix(const Eigen::VectorXd& w, const std::vector<char>& active) const;
 
   InterpolationParams params_;
@@ -114,9 +117,9 @@ class Interpolator {
   std::unique_ptr<CohesiveEnergy> cohesive_;
   std::unique_ptr<NonOverlap> nonOverlap_;  // always built; used when params_.nonOverlap
   PlacementGroups groups_;
+  std::vector<std::pair<int, int>> groupLinks_;  // the links groups_ was last built from
   CholeskyPreconditioner factor_;
-  AndersonAcceleration anderson_;          // kept across frames while H and the active keys stay
-  std::vector<int> andersonKeys_;          // active keys the history belongs to
+  AndersonAcceleration anderson_;          // history kept across frames
   Eigen::VectorXd factorWeights_;
   std::vector<char> factorActive_;
   double gradientFloor_ = 0;               // absolute |g|_inf below which a start is converged

@@ -189,8 +189,22 @@ int NonOverlap::project(Eigen::MatrixX2d& x, const std::vector<int>& participant
   for (int pass = 0; pass < passes; ++pass) {
     const auto found = offenders(x, participants, true);
     if (found.empty()) return 0;
-    for (const Offender& o : found)
-      if (o.edgeA >= 0) x.row(o.vertex) = o.target.transpose();
+    // One offender at a time, each re-checked against the positions moved before it, and set
+    // past the edge (away from the triangle it was in) by a margin that grows with every pass,
+    // which breaks the cycles of two offenders pushing each other back in at a tangent contact.
+    const double margin = std::min(0.25, 1e-3 * std::pow(4.0, pass));  // times the edge length
+    for (const Offender& stale : found) {
+      const std::vector<int> one = {stale.vertex};
+      const auto current = offenders(x, one, true);
+      if (current.empty() || current[0].edgeA < 0) continue;
+      const Offender& o = current[0];
+      const auto& tri = triangles_[o.triangle];
+      const Eigen::Vector2d centre = (x.row(tri[0]) + x.row(tri[1]) + x.row(tri[2])).transpose() / 3.0;
+      const Eigen::Vector2d edge = (x.row(o.edgeB) - x.row(o.edgeA)).transpose();
+      Eigen::Vector2d normal(edge.y(), -edge.x());
+      if (normal.dot(o.target - centre) < 0) normal = -normal;
+      x.row(o.vertex) = (o.target + margin * normal).transpose();  // normal has the edge's length
+    }
   }
   return countInside(x, participants);
 }

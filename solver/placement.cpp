@@ -51,9 +51,54 @@ void PlacementGroups::update(const std::vector<std::pair<int, int>>& links) {
   for (size_t v = 0; v < label_.size(); ++v) label_[v] = componentGroup[meshComponent_[v]];
 }
 
+namespace {
+
+// The common case, one group: the same as below without per-vertex labels.
+void alignOne(Eigen::MatrixX2d& x, const Eigen::MatrixX2d& target, const Eigen::VectorXd& mass) {
+  const int n = static_cast<int>(x.rows());
+  double* px = x.col(0).data();
+  double* py = x.col(1).data();
+  const double* tx = target.col(0).data();
+  const double* ty = target.col(1).data();
+  const double* m = mass.data();
+  double total = 0, cx = 0, cy = 0, qx = 0, qy = 0;
+#pragma omp simd reduction(+ : total, cx, cy, qx, qy)
+  for (int v = 0; v < n; ++v) {
+    total += m[v];
+    cx += m[v] * px[v];
+    cy += m[v] * py[v];
+    qx += m[v] * tx[v];
+    qy += m[v] * ty[v];
+  }
+  cx /= total;
+  cy /= total;
+  qx /= total;
+  qy /= total;
+  double dot = 0, cross = 0;
+#pragma omp simd reduction(+ : dot, cross)
+  for (int v = 0; v < n; ++v) {
+    const double ax = px[v] - cx, ay = py[v] - cy, bx = tx[v] - qx, by = ty[v] - qy;
+    dot += m[v] * (ax * bx + ay * by);
+    cross += m[v] * (ax * by - ay * bx);
+  }
+  const double angle = std::atan2(cross, dot), c = std::cos(angle), s = std::sin(angle);
+#pragma omp simd
+  for (int v = 0; v < n; ++v) {
+    const double ax = px[v] - cx, ay = py[v] - cy;
+    px[v] = c * ax - s * ay + qx;
+    py[v] = s * ax + c * ay + qy;
+  }
+}
+
+}  // namespace
+
 void alignGroups(Eigen::MatrixX2d& x, const Eigen::MatrixX2d& target, const Eigen::VectorXd& mass,
                  const PlacementGroups& groups) {
   const int g = groups.groupCount();
+  if (g == 1) {
+    alignOne(x, target, mass);
+    return;
+  }
   const int* label = groups.label().data();
   const int n = static_cast<int>(x.rows());
   double* px = x.col(0).data();
