@@ -144,6 +144,13 @@ void Interpolator::evaluateState(const Frame& frame, State& s) const {
   if (params_.nonOverlap) s.energy += nonOverlap_->evaluate(s.x, frame.participants, s.gradient, s.contacts);
 }
 
+void Interpolator::evaluateLinks(const Frame& frame, State& s) const {
+  Eigen::MatrixX2d scratch = Eigen::MatrixX2d::Zero(vertexCount(), 2);
+  cohesive_->evaluate(s.x, frame.w, scratch, s.active);
+  s.contacts.clear();
+  if (params_.nonOverlap) nonOverlap_->evaluate(s.x, frame.participants, scratch, s.contacts);
+}
+
 void Interpolator::align(const Frame& frame, const State& reference, Eigen::MatrixX2d& x) {
   std::vector<std::pair<int, int>> links = reference.contacts;
   const auto& terms = cohesive_->terms();
@@ -234,11 +241,13 @@ InterpolationResult Interpolator::solve(const Eigen::VectorXd& w, const Eigen::M
   } else {
     s.x = frame.blend;
   }
-  evaluateState(frame, s);
+  // Place the start rigidly with the groups its own links define, then evaluate.
+  evaluateLinks(frame, s);
   align(frame, s, s.x);
   evaluateState(frame, s);
 
   InterpolationResult result;
+  result.evaluations = 1;
   ensureFactorization(w, s.active, result);
   result.startEnergy = s.energy;
   result.energyHistory.push_back(s.energy);

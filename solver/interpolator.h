@@ -56,7 +56,7 @@ struct SolverOptions {
 struct InterpolationResult {
   Eigen::MatrixX2d x;                 // n x 2, the inbetween in the multimesh's units
   int iterations = 0;
-  int evaluations = 0;                // local steps (energy + gradient), rejected candidates included
+  int evaluations = 0;                // local steps (energy + gradient): the start, every candidate
   double relativeResidual = 0;        // |g|_inf / |g(x_start)|_inf at the end (0 for a zero start gradient)
   double energy = 0;                  // W_I + E_P at x (normalized units)
   double startEnergy = 0;             // the same at the (aligned) start
@@ -101,6 +101,8 @@ class Interpolator {
   struct State;
   Frame makeFrame(const Eigen::VectorXd& w) const;
   void evaluateState(const Frame& frame, State& state) const;
+  // Only what placement groups need: active cohesive pairs and non-overlap contacts.
+  void evaluateLinks(const Frame& frame, State& state) const;
   void align(const Frame& frame, const State& reference, Eigen::MatrixX2d& x);
   void ensureFactorization(const Eigen::VectorXd& w, const std::vector<char>& active, InterpolationResult& result);
   void refactorize(const Eigen::VectorXd& w, const std::vector<char>& active, InterpolationResult& result);

@@ -99,72 +99,83 @@ bool NonOverlap::excluded(int vertex, int other) const {
   return std::find(p.begin(), p.end(), other) != p.end();
 }
 
-std::vector<NonOverlap::Offender> NonOverlap::offenders(const Eigen::MatrixX2d& x, const std::vector<int>& participants,
-                                                        bool withTargets) const {
-  std::vector<Offender> out;
-  if (participants.empty()) return out;
-  const int t = static_cast<int>(triangles_.size());
-  Eigen::MatrixX2d lo(t, 2), hi(t, 2);
-  double edgeSum = 0;
+NonOverlap::Grids NonOverlap::buildGrids(const Eigen::MatrixX2d& x) const {
+  const int t = static_cast<int>(triangles_.size()), e = static_cast<int>(boundaryEdges_.size());
+  Eigen::MatrixX2d lo(t, 2), hi(t, 2), elo(e, 2), ehi(e, 2);
+  double extent = 0;
   for (int k = 0; k < t; ++k) {
     const auto& tri = triangles_[k];
     lo.row(k) = x.row(tri[0]).cwiseMin(x.row(tri[1])).cwiseMin(x.row(tri[2]));
     hi.row(k) = x.row(tri[0]).cwiseMax(x.row(tri[1])).cwiseMax(x.row(tri[2]));
-    edgeSum += (hi.row(k) - lo.row(k)).norm();
+    extent += (hi.row(k) - lo.row(k)).norm();
   }
-  const double cell = std::max(edgeSum / t, 1e-12);
-  const BoxGrid triangleGrid(lo, hi, cell);
-  for (int v : participants) {
-    const Eigen::Vector2d p = x.row(v).transpose();
-    for (int k : triangleGrid.itemsAt(p)) {
-      const auto& tri = triangles_[k];
-      if (excluded(v, tri[0]) || excluded(v, tri[1]) || excluded(v, tri[2])) continue;
-      if (interiorPoint(p, x, k)) {
-        out.push_back({v, k, p});
-        break;
-      }
-    }
-  }
-  if (!withTargets || out.empty()) return out;
-
-  const int e = static_cast<int>(boundaryEdges_.size());
-  Eigen::MatrixX2d elo(e, 2), ehi(e, 2);
   for (int k = 0; k < e; ++k) {
     elo.row(k) = x.row(boundaryEdges_[k].first).cwiseMin(x.row(boundaryEdges_[k].second));
     ehi.row(k) = x.row(boundaryEdges_[k].first).cwiseMax(x.row(boundaryEdges_[k].second));
   }
-  const BoxGrid edgeGrid(elo, ehi, cell);
-  // A target must itself be outside the mesh interior (another component may cover it).
-  const auto feasible = [&](const Eigen::Vector2d& q, int v) {
-    for (int k : triangleGrid.itemsAt(q)) {
-      const auto& tri = triangles_[k];
-      if (excluded(v, tri[0]) || excluded(v, tri[1]) || excluded(v, tri[2])) continue;
-      if (interiorPoint(q, x, k)) return false;
-    }
-    return true;
-  };
-  for (Offender& o : out) {
-    const Eigen::Vector2d p = x.row(o.vertex).transpose();
-    double best = std::numeric_limits<double>::infinity();
-    for (int ring = 0; best > (ring - 1) * edgeGrid.cellSize(); ++ring) {
-      const bool inGrid = edgeGrid.visitRing(p, ring, [&](int k) {
-        const auto [a, b] = boundaryEdges_[k];
-        if (excluded(o.vertex, a) || excluded(o.vertex, b)) return;
-        const Eigen::Vector2d xa = x.row(a).transpose(), xb = x.row(b).transpose();
-        const double t = segmentParameter(p, xa, xb);
-        const Eigen::Vector2d q = xa + t * (xb - xa);
-        const double d = (q - p).norm();
-        if (d < best && feasible(q, o.vertex)) {
-          best = d;
-          o.target = q;
-          o.edgeA = a;
-          o.edgeB = b;
-          o.t = t;
-        }
-      });
-      if (!inGrid) break;
+  const double cell = std::max(extent / std::max(t, 1), 1e-12);  // about one triangle per cell
+  return {BoxGrid(lo, hi, cell), BoxGrid(elo, ehi, cell)};
+}
+
+bool NonOverlap::detect(const Eigen::MatrixX2d& x, const Grids& grids, int v, Offender& o) const {
+  const Eigen::Vector2d p = x.row(v).transpose();
+  for (int k : grids.triangles.itemsAt(p)) {
+    const auto& tri = triangles_[k];
+    if (excluded(v, tri[0]) || excluded(v, tri[1]) || excluded(v, tri[2])) continue;
+    if (interiorPoint(p, x, k)) {
+      o = {v, k, p};
+      return true;
     }
   }
+  return false;
+}
+
+bool NonOverlap::inside(const Eigen::MatrixX2d& x, const Grids& grids, const Eigen::Vector2d& q, int v) const {
+  for (int k : grids.triangles.itemsAt(q)) {
+    const auto& tri = triangles_[k];
+    if (excluded(v, tri[0]) || excluded(v, tri[1]) || excluded(v, tri[2])) continue;
+    if (interiorPoint(q, x, k)) return true;
+  }
+  return false;
+}
+
+void NonOverlap::findTarget(const Eigen::MatrixX2d& x, const Grids& grids, Offender& o) const {
+  // Nearest point on a boundary edge not incident to the vertex that no other triangle covers,
+  // searched ring by ring outwards until no closer point can exist.
+  const Eigen::Vector2d p = x.row(o.vertex).transpose();
+  const BoxGrid& edges = grids.edges;
+  double best = std::numeric_limits<double>::infinity();
+  for (int ring = 0; best > (ring - 1) * edges.cellSize(); ++ring) {
+    const bool inGrid = edges.visitRing(p, ring, [&](int k) {
+      const auto [a, b] = boundaryEdges_[k];
+      if (excluded(o.vertex, a) || excluded(o.vertex, b)) return;
+      const Eigen::Vector2d xa = x.row(a).transpose(), xb = x.row(b).transpose();
+      const double t = segmentParameter(p, xa, xb);
+      const Eigen::Vector2d q = xa + t * (xb - xa);
+      const double d = (q - p).norm();
+      if (d < best && !inside(x, grids, q, o.vertex)) {
+        best = d;
+        o.target = q;
+        o.edgeA = a;
+        o.edgeB = b;
+        o.t = t;
+      }
+    });
+    if (!inGrid) break;
+  }
+}
+
+std::vector<NonOverlap::Offender> NonOverlap::offenders(const Eigen::MatrixX2d& x, const std::vector<int>& participants,
+                                                        bool withTargets) const {
+  std::vector<Offender> out;
+  if (participants.empty()) return out;
+  const Grids grids = buildGrids(x);
+  Offender o;
+  for (int v : participants)
+    if (detect(x, grids, v, o)) {
+      if (withTargets) findTarget(x, grids, o);
+      out.push_back(o);
+    }
   return out;
 }
 
@@ -187,23 +198,25 @@ double NonOverlap::evaluate(const Eigen::MatrixX2d& x, const std::vector<int>& p
 
 int NonOverlap::project(Eigen::MatrixX2d& x, const std::vector<int>& participants, int passes) const {
   for (int pass = 0; pass < passes; ++pass) {
-    const auto found = offenders(x, participants, true);
+    const auto found = offenders(x, participants, false);
     if (found.empty()) return 0;
-    // One offender at a time, each re-checked against the positions moved before it, and set
-    // past the edge (away from the triangle it was in) by a margin that grows with every pass,
-    // which breaks the cycles of two offenders pushing each other back in at a tangent contact.
+    // One offender at a time, each re-checked against the positions moved before it (with this
+    // pass's grids), and set past the edge, away from the triangle it was in, by a margin that
+    // grows with every pass: that breaks the cycles of two offenders pushing each other back
+    // in at a tangent contact.
+    const Grids grids = buildGrids(x);
     const double margin = std::min(0.25, 1e-3 * std::pow(4.0, pass));  // times the edge length
+    Offender o;
     for (const Offender& stale : found) {
-      const std::vector<int> one = {stale.vertex};
-      const auto current = offenders(x, one, true);
-      if (current.empty() || current[0].edgeA < 0) continue;
-      const Offender& o = current[0];
+      if (!detect(x, grids, stale.vertex, o)) continue;
+      findTarget(x, grids, o);
+      if (o.edgeA < 0) continue;
       const auto& tri = triangles_[o.triangle];
       const Eigen::Vector2d centre = (x.row(tri[0]) + x.row(tri[1]) + x.row(tri[2])).transpose() / 3.0;
       const Eigen::Vector2d edge = (x.row(o.edgeB) - x.row(o.edgeA)).transpose();
-      Eigen::Vector2d normal(edge.y(), -edge.x());
+      Eigen::Vector2d normal(edge.y(), -edge.x());  // as long as the edge
       if (normal.dot(o.target - centre) < 0) normal = -normal;
-      x.row(o.vertex) = (o.target + margin * normal).transpose();  // normal has the edge's length
+      x.row(o.vertex) = (o.target + margin * normal).transpose();
     }
   }
   return countInside(x, participants);

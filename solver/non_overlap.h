@@ -9,6 +9,7 @@
 // their p_j, repeating while any remain, so the returned frame has no boundary vertex inside.
 #pragma once
 
+#include "box_grid.h"
 #include "deformation_energy.h"
 #include "multimesh.h"
 
@@ -44,12 +45,23 @@ class NonOverlap {
 
  private:
   struct Offender {
-    int vertex;
-    int triangle;            // a triangle it is strictly inside
+    int vertex = -1;
+    int triangle = -1;       // a triangle it is inside
     Eigen::Vector2d target;  // nearest feasible point p_j = (1 - t) x_a + t x_b
     int edgeA = -1, edgeB = -1;
     double t = 0;
   };
+  struct Grids {
+    BoxGrid triangles;  // deformed triangles' boxes
+    BoxGrid edges;      // deformed boundary edges' boxes
+  };
+  Grids buildGrids(const Eigen::MatrixX2d& x) const;
+  // Whether vertex v lies inside a triangle not incident to it; fills o (without a target).
+  bool detect(const Eigen::MatrixX2d& x, const Grids& grids, int v, Offender& o) const;
+  // Whether point q is in the mesh interior, ignoring triangles incident to vertex v.
+  bool inside(const Eigen::MatrixX2d& x, const Grids& grids, const Eigen::Vector2d& q, int v) const;
+  // Nearest feasible point for o (edgeA stays -1 if there is none).
+  void findTarget(const Eigen::MatrixX2d& x, const Grids& grids, Offender& o) const;
   std::vector<Offender> offenders(const Eigen::MatrixX2d& x, const std::vector<int>& participants, bool withTargets) const;
   bool excluded(int vertex, int other) const;  // other is vertex itself or a cohesive partner
   // p in the interior of the mesh through triangle k: inside the closed triangle, and not on a
