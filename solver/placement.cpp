@@ -41,6 +41,7 @@ PlacementGroups::PlacementGroups(int vertexCount, const std::vector<std::pair<in
   meshComponents_ = labelRoots(uf, vertexCount, meshComponent_);
   label_ = meshComponent_;
   groupCount_ = meshComponents_;
+  buildMembers();
 }
 
 void PlacementGroups::update(const std::vector<std::pair<int, int>>& links) {
@@ -49,21 +50,32 @@ void PlacementGroups::update(const std::vector<std::pair<int, int>>& links) {
   std::vector<int> componentGroup;
   groupCount_ = labelRoots(uf, meshComponents_, componentGroup);
   for (size_t v = 0; v < label_.size(); ++v) label_[v] = componentGroup[meshComponent_[v]];
+  buildMembers();
+}
+
+void PlacementGroups::buildMembers() {
+  memberStart_.assign(groupCount_ + 1, 0);
+  for (int g : label_) ++memberStart_[g + 1];
+  for (int k = 0; k < groupCount_; ++k) memberStart_[k + 1] += memberStart_[k];
+  members_.resize(label_.size());
+  std::vector<int> fill(memberStart_.begin(), memberStart_.end() - 1);
+  for (size_t v = 0; v < label_.size(); ++v) members_[fill[label_[v]]++] = static_cast<int>(v);
 }
 
 namespace {
 
-// The common case, one group: the same as below without per-vertex labels.
-void alignOne(Eigen::MatrixX2d& x, const Eigen::MatrixX2d& target, const Eigen::VectorXd& mass) {
-  const int n = static_cast<int>(x.rows());
+// Aligns the vertices index(0..count-1) of x rigidly to target: weighted centroids, then the
+// angle atan2(sum m (p x q), sum m (p . q)) of the centred point sets p (x) and q (target).
+template <class Index>
+void alignSet(Eigen::MatrixX2d& x, const Eigen::MatrixX2d& target, const Eigen::VectorXd& mass, int count, Index index) {
   double* px = x.col(0).data();
   double* py = x.col(1).data();
   const double* tx = target.col(0).data();
   const double* ty = target.col(1).data();
   const double* m = mass.data();
   double total = 0, cx = 0, cy = 0, qx = 0, qy = 0;
-#pragma omp simd reduction(+ : total, cx, cy, qx, qy)
-  for (int v = 0; v < n; ++v) {
+  for (int i = 0; i < count; ++i) {
+    const int v = index(i);
     total += m[v];
     cx += m[v] * px[v];
     cy += m[v] * py[v];
@@ -75,15 +87,15 @@ void alignOne(Eigen::MatrixX2d& x, const Eigen::MatrixX2d& target, const Eigen::
   qx /= total;
   qy /= total;
   double dot = 0, cross = 0;
-#pragma omp simd reduction(+ : dot, cross)
-  for (int v = 0; v < n; ++v) {
+  for (int i = 0; i < count; ++i) {
+    const int v = index(i);
     const double ax = px[v] - cx, ay = py[v] - cy, bx = tx[v] - qx, by = ty[v] - qy;
     dot += m[v] * (ax * bx + ay * by);
     cross += m[v] * (ax * by - ay * bx);
   }
   const double angle = std::atan2(cross, dot), c = std::cos(angle), s = std::sin(angle);
-#pragma omp simd
-  for (int v = 0; v < n; ++v) {
+  for (int i = 0; i < count; ++i) {
+    const int v = index(i);
     const double ax = px[v] - cx, ay = py[v] - cy;
     px[v] = c * ax - s * ay + qx;
     py[v] = s * ax + c * ay + qy;
@@ -94,53 +106,15 @@ void alignOne(Eigen::MatrixX2d& x, const Eigen::MatrixX2d& target, const Eigen::
 
 void alignGroups(Eigen::MatrixX2d& x, const Eigen::MatrixX2d& target, const Eigen::VectorXd& mass,
                  const PlacementGroups& groups) {
-  const int g = groups.groupCount();
-  if (g == 1) {
-    alignOne(x, target, mass);
+  if (groups.groupCount() == 1) {  // the common case, without indirection
+    alignSet(x, target, mass, static_cast<int>(x.rows()), [](int i) { return i; });
     return;
   }
-  const int* label = groups.label().data();
-  const int n = static_cast<int>(x.rows());
-  double* px = x.col(0).data();
-  double* py = x.col(1).data();
-  const double* tx = target.col(0).data();
-  const double* ty = target.col(1).data();
-  const double* m = mass.data();
-  // Per group: total mass, centroids of x and target.
-  std::vector<double> total(g, 0.0), cx(g, 0.0), cy(g, 0.0), qx(g, 0.0), qy(g, 0.0);
-  for (int v = 0; v < n; ++v) {
-    const int k = label[v];
-    total[k] += m[v];
-    cx[k] += m[v] * px[v];
-    cy[k] += m[v] * py[v];
-    qx[k] += m[v] * tx[v];
-    qy[k] += m[v] * ty[v];
-  }
-  for (int k = 0; k < g; ++k) {
-    cx[k] /= total[k];
-    cy[k] /= total[k];
-    qx[k] /= total[k];
-    qy[k] /= total[k];
-  }
-  // Optimal angle: atan2(sum m (p x q), sum m (p . q)) with p, q centred source and target.
-  std::vector<double> dot(g, 0.0), cross(g, 0.0);
-  for (int v = 0; v < n; ++v) {
-    const int k = label[v];
-    const double ax = px[v] - cx[k], ay = py[v] - cy[k], bx = tx[v] - qx[k], by = ty[v] - qy[k];
-    dot[k] += m[v] * (ax * bx + ay * by);
-    cross[k] += m[v] * (ax * by - ay * bx);
-  }
-  std::vector<double> cosine(g), sine(g);
-  for (int k = 0; k < g; ++k) {
-    const double angle = std::atan2(cross[k], dot[k]);
-    cosine[k] = std::cos(angle);
-    sine[k] = std::sin(angle);
-  }
-  for (int v = 0; v < n; ++v) {
-    const int k = label[v];
-    const double ax = px[v] - cx[k], ay = py[v] - cy[k];
-    px[v] = cosine[k] * ax - sine[k] * ay + qx[k];
-    py[v] = sine[k] * ax + cosine[k] * ay + qy[k];
+  const auto& start = groups.memberStart();
+  const auto& members = groups.members();
+  for (int k = 0; k < groups.groupCount(); ++k) {
+    const int* list = members.data() + start[k];
+    alignSet(x, target, mass, start[k + 1] - start[k], [list](int i) { return list[i]; });
   }
 }
 

@@ -22,12 +22,17 @@ class PlacementGroups {
   void update(const std::vector<std::pair<int, int>>& links);
   const std::vector<int>& label() const { return label_; }
   int groupCount() const { return groupCount_; }
+  // Vertices of group k: members()[memberStart()[k] .. memberStart()[k + 1]).
+  const std::vector<int>& memberStart() const { return memberStart_; }
+  const std::vector<int>& members() const { return members_; }
 
  private:
+  void buildMembers();
   std::vector<int> meshComponent_;  // component label from mesh edges alone
   int meshComponents_ = 0;
   std::vector<int> label_;
   int groupCount_ = 0;
+  std::vector<int> memberStart_, members_;  // CSR lists of each group's vertices
 };
 
 // Applies, per group, the rigid motion (rotation + translation) minimizing
