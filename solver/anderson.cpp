@@ -16,8 +16,12 @@ void AndersonAcceleration::reset() {
 
 void AndersonAcceleration::restart() { havePrevious_ = false; }
 
-Eigen::VectorXd AndersonAcceleration::next(const Eigen::VectorXd& gx, const Eigen::VectorXd& f) {
-  if (depth_ == 0) return gx;
+void AndersonAcceleration::next(const Eigen::Ref<const Eigen::VectorXd>& gx,
+                                const Eigen::Ref<const Eigen::VectorXd>& f, Eigen::Ref<Eigen::VectorXd> out) {
+  if (depth_ == 0) {
+    out = gx;
+    return;
+  }
   const Eigen::Index size = f.size();
   if (dF_.rows() != size) {
     dF_.resize(size, depth_);
@@ -41,11 +45,11 @@ Eigen::VectorXd AndersonAcceleration::next(const Eigen::VectorXd& gx, const Eige
     std::vector<double> local(2 * static_cast<size_t>(depth_), 0.0);
 #pragma omp for schedule(static)
     for (Eigen::Index i = 0; i < size; ++i) {
-      double* dFrow = dF_.row(i).data();
+      float* dFrow = dF_.row(i).data();
       if (append) {
-        dFrow[fresh] = f(i) - previousF_(i);
-        dG_(i, fresh) = gx(i) - previousG_(i);
-        for (int j = 0; j < cols; ++j) local[j] += dFrow[j] * dFrow[fresh];
+        dFrow[fresh] = static_cast<float>(f(i) - previousF_(i));
+        dG_(i, fresh) = static_cast<float>(gx(i) - previousG_(i));
+        for (int j = 0; j < cols; ++j) local[j] += double(dFrow[j]) * dFrow[fresh];
       }
       for (int j = 0; j < cols; ++j) local[depth_ + j] += dFrow[j] * f(i);
       previousF_(i) = f(i);
@@ -55,7 +59,10 @@ Eigen::VectorXd AndersonAcceleration::next(const Eigen::VectorXd& gx, const Eige
     for (size_t j = 0; j < sums.size(); ++j) sums[j] += local[j];
   }
   havePrevious_ = true;
-  if (cols == 0) return gx;
+  if (cols == 0) {
+    out = gx;
+    return;
+  }
   if (append)
     for (int j = 0; j < cols; ++j) gram_(fresh, j) = gram_(j, fresh) = sums[j];
 
@@ -66,17 +73,16 @@ Eigen::VectorXd AndersonAcceleration::next(const Eigen::VectorXd& gx, const Eige
   const Eigen::VectorXd gamma = normal.ldlt().solve(rhs);
   if (!gamma.allFinite()) {
     reset();
-    return gx;
+    out = gx;
+    return;
   }
-  Eigen::VectorXd out(size);
 #pragma omp parallel for schedule(static) num_threads(threads_)
   for (Eigen::Index i = 0; i < size; ++i) {
-    const double* dGrow = dG_.row(i).data();
+    const float* dGrow = dG_.row(i).data();
     double v = gx(i);
     for (int j = 0; j < cols; ++j) v -= dGrow[j] * gamma(j);
     out(i) = v;
   }
-  return out;
 }
 
 }  // namespace ib

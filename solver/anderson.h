@@ -21,12 +21,15 @@ class AndersonAcceleration {
   // Keeps the stored differences but forgets the last iterate, for a new but similar map
   // (the next frame): the old secant information then seeds the first steps.
   void restart();
-  // gx: G(x) for the current iterate x; residual: its residual (same size). Returns the
-  // accelerated next iterate; with no history yet (or depth 0) that is gx itself.
-  Eigen::VectorXd next(const Eigen::VectorXd& gx, const Eigen::VectorXd& residual);
+  // gx: G(x) for the current iterate x; residual: its residual; out: receives the accelerated
+  // next iterate (gx itself with no history yet, or depth 0). All of the same size.
+  void next(const Eigen::Ref<const Eigen::VectorXd>& gx, const Eigen::Ref<const Eigen::VectorXd>& residual,
+            Eigen::Ref<Eigen::VectorXd> out);
 
  private:
-  using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+  // The differences are stored in single precision: they only set the mixing coefficients and
+  // the size of a step whose energy the caller checks, and half the bytes make the passes faster.
+  using RowMajor = Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
   int depth_, threads_;
   int stored_ = 0, newest_ = -1;
   bool havePrevious_ = false;

@@ -43,6 +43,7 @@ void validateOptions(const InterpolationParams& p, const SolverOptions& o) {
 double infinityNorm(const Eigen::MatrixX2d& g) { return g.size() ? g.cwiseAbs().maxCoeff() : 0.0; }
 
 Eigen::Map<const Eigen::VectorXd> flat(const Eigen::MatrixX2d& x) { return {x.data(), x.size()}; }
+Eigen::Map<Eigen::VectorXd> flatMutable(Eigen::MatrixX2d& x) { return {x.data(), x.size()}; }
 
 // Threads for a mesh of n vertices: below a few thousand vertices a thread's share of an
 // iteration is shorter than the cost of waking it, so small meshes run on one.
@@ -266,13 +267,14 @@ InterpolationResult Interpolator::solve(const Eigen::VectorXd& w, const Eigen::M
   result.residualHistory.push_back(relative(norm));
 
   State candidate;
+  Eigen::MatrixX2d plain;  // the plain local-global step G(x)
   while (norm > target && result.iterations < options_.maxIterations) {
-    Eigen::MatrixX2d step = s.gradient;
-    factor_.solve(step);
-    Eigen::MatrixX2d plain = s.x - step;
+    plain = s.gradient;
+    factor_.solve(plain);  // H^{-1} g
+    plain = s.x - plain;
     align(frame, s, plain);
-    const Eigen::VectorXd accelerated = anderson_.next(flat(plain), flat(s.gradient));
-    candidate.x = Eigen::Map<const Eigen::MatrixX2d>(accelerated.data(), vertexCount(), 2);
+    candidate.x.resize(vertexCount(), 2);
+    anderson_.next(flat(plain), flat(s.gradient), flatMutable(candidate.x));
     evaluateState(frame, candidate);
     ++result.evaluations;
     bool accepted = candidate.energy <= s.energy + slack;
