@@ -14,7 +14,8 @@ namespace ib {
 
 class AndersonAcceleration {
  public:
-  // depth: history length (0 disables acceleration); threads: for the O(size) passes.
+  static constexpr int kMaxDepth = 16;
+  // depth: history length, 0..kMaxDepth (0 disables acceleration); threads: for the O(size) passes.
   AndersonAcceleration(int depth, int threads);
 
   void reset();
@@ -29,12 +30,12 @@ class AndersonAcceleration {
  private:
   // The differences are stored in single precision: they only set the mixing coefficients and
   // the size of a step whose energy the caller checks, and half the bytes make the passes faster.
-  using RowMajor = Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+  using History = Eigen::MatrixXf;
   int depth_, threads_;
   int stored_ = 0, newest_ = -1;
   bool havePrevious_ = false;
   Eigen::VectorXd previousF_, previousG_;
-  RowMajor dF_, dG_;        // size x depth ring buffers of differences, one row per entry
+  History dF_, dG_;         // size x depth ring buffers of differences, one column each
   Eigen::MatrixXd gram_;    // depth x depth, dF^T dF kept up to date column by column
 };
 

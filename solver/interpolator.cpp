@@ -33,7 +33,8 @@ void validateOptions(const InterpolationParams& p, const SolverOptions& o) {
   require(c.alpha >= 0 && c.alpha <= 1, "alpha", "must be in [0, 1]");
   require(o.relativeTolerance > 0 && o.relativeTolerance < 1, "relativeTolerance", "must be in (0, 1)");
   require(o.maxIterations >= 1, "maxIterations", "must be >= 1");
-  require(o.andersonDepth >= 0 && o.andersonDepth <= 50, "andersonDepth", "must be in [0, 50]");
+  require(o.andersonDepth >= 0 && o.andersonDepth <= AndersonAcceleration::kMaxDepth, "andersonDepth",
+          "must be in [0, " + std::to_string(AndersonAcceleration::kMaxDepth) + "]");
   require(o.refactorDistance >= 0 && std::isfinite(o.refactorDistance), "refactorDistance", "must be >= 0");
   require(o.placementStiffness > 0 && std::isfinite(o.placementStiffness), "placementStiffness", "must be > 0");
   require(o.nonOverlapStiffness > 0 && std::isfinite(o.nonOverlapStiffness), "nonOverlapStiffness", "must be > 0");
