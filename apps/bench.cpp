@@ -95,7 +95,8 @@ void progress(const std::string& text) {
 // One warm-started sweep of `frames` frames after a cold solve at s = 0.
 struct Sweep {
   double msPerFrame = 0, msPerIter = 0, maxMs = 0, itersPerFrame = 0, firstSolveMs = 0, factorMs = 0;
-  int factorizations = 0, unconverged = 0;
+  int factorizations = 0, unconverged = 0, threads = 0;
+  long factorNonZeros = 0;
 };
 
 Sweep runSweep(const Multimesh& mesh, const InterpolationParams& params, const SolverOptions& options, int keys,
@@ -121,6 +122,8 @@ Sweep runSweep(const Multimesh& mesh, const InterpolationParams& params, const S
   out.msPerIter = (totalMs - factorMs) / std::max(1L, iterations);
   out.itersPerFrame = double(iterations) / frames;
   out.factorMs = out.factorizations ? factorMs / out.factorizations : 0.0;
+  out.threads = solver.threads();
+  out.factorNonZeros = solver.factorNonZeros();
   return out;
 }
 
@@ -148,14 +151,15 @@ nlohmann::json benchCase(int vertices, int keys, int frames, int repeats, int th
                         {"ms_per_iter", median(runs, [](const Sweep& s) { return s.msPerIter; })},
                         {"iters_to_converge", any.itersPerFrame},
                         {"ms_per_frame", median(runs, [](const Sweep& s) { return s.msPerFrame; })},
-                        {"threads", Interpolator(mesh, params, options).threads()},
+                        {"threads", any.threads},
                         {"frames", frames},
                         {"repeats", repeats},
                         {"ms_per_frame_max", median(runs, [](const Sweep& s) { return s.maxMs; })},
                         {"factorizations", any.factorizations},
                         {"ms_per_factorization", median(runs, [](const Sweep& s) { return s.factorMs; })},
                         {"unconverged_frames", any.unconverged},
-                        {"first_solve_ms", median(runs, [](const Sweep& s) { return s.firstSolveMs; })}};
+                        {"first_solve_ms", median(runs, [](const Sweep& s) { return s.firstSolveMs; })},
+                        {"factor_nonzeros", any.factorNonZeros}};
 
   if (baseline) {
     progress(label + ": optimum and plain local-global baseline");

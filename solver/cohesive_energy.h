@@ -39,7 +39,6 @@ class CohesiveEnergy {
   CohesiveEnergy(const Multimesh& mesh, const std::vector<Eigen::MatrixX2d>& keys, const CohesiveParams& params);
 
   const std::vector<CohesiveTerm>& terms() const { return terms_; }
-  const CohesiveParams& params() const { return params_; }
 
   // Returns sum_i w_i W_C(C_i, x), adds its gradient to gradient (n x 2) and sets
   // active[j] for every term j (false for terms of keys with zero weight).

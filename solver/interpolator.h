@@ -7,12 +7,13 @@
 // non-overlap targets) runs fused with the evaluation of the energy E and its gradient g. The
 // global step is x <- x - H^{-1} g with H = sum_t E^T M_t(w) E + cohesive springs + mu M, an n x n
 // matrix shared by x and y. With H the exact quadratic of the current frame this is the
-// classic global solve; H is refactorized only when w has moved by more than
+// classic global solve. H is refactorized only when w has moved by more than
 // SolverOptions::refactorDistance (L1) since the last factorization, when the set of active
-// cohesive pairs at the start of a frame differs from H's, or when a step fails while it differs
-// (pairs engaged or let go mid-solve); otherwise it serves as a fixed preconditioner: the fixed point is the
-// same stationary point (g = 0), and the anisotropic, x-dependent cohesive matrix P lives in the
-// gradient (local step), not in H. Anderson acceleration on top; an accelerated iterate that
+// cohesive pairs at the start of a frame differs from H's, or when a step fails while it
+// differs (pairs engaged or let go mid-solve). Otherwise it serves as a fixed preconditioner:
+// the fixed point is the same stationary point (g = 0), and the anisotropic, x-dependent
+// cohesive matrix P lives in the gradient (local step), not in H. Anderson acceleration on top,
+// minimizing the gradient, its history carried from frame to frame. An accelerated iterate that
 // raises E is replaced by the plain step, and a plain step that raises E is backtracked, so a
 // solve never returns a worse energy than its start.
 //
@@ -32,7 +33,6 @@
 #include <Eigen/Core>
 #include <Eigen/Sparse>
 #include <memory>
-#include <optional>
 #include <vector>
 
 namespace ib {

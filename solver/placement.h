@@ -18,9 +18,8 @@ namespace ib {
 class PlacementGroups {
  public:
   PlacementGroups(int vertexCount, const std::vector<std::pair<int, int>>& meshEdges);
-  // Group label per vertex (0..groupCount()-1) with the extra links joined in.
+  // Regroups with the extra links joined in (groups are numbered 0..groupCount()-1).
   void update(const std::vector<std::pair<int, int>>& links);
-  const std::vector<int>& label() const { return label_; }
   int groupCount() const { return groupCount_; }
   // Vertices of group k: members()[memberStart()[k] .. memberStart()[k + 1]).
   const std::vector<int>& memberStart() const { return memberStart_; }
@@ -30,7 +29,7 @@ class PlacementGroups {
   void buildMembers();
   std::vector<int> meshComponent_;  // component label from mesh edges alone
   int meshComponents_ = 0;
-  std::vector<int> label_;
+  std::vector<int> label_;  // group of each vertex
   int groupCount_ = 0;
   std::vector<int> memberStart_, members_;  // CSR lists of each group's vertices
 };
