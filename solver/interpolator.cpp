@@ -71,6 +71,7 @@ struct Interpolator::Frame {
   Eigen::VectorXd w;
   ActiveKeys keys;
   Eigen::MatrixX2d blend;         // Xbar(w) = sum_i w_i X_i, normalized
+  Eigen::VectorXd mass;           // m_v(w) = sum_i w_i (lumped area of v in key i), normalized
   std::vector<int> participants;  // W_O boundary vertices
 };
 
@@ -102,7 +103,6 @@ Interpolator::Interpolator(const Multimesh& mesh, const InterpolationParams& par
   edges_ = meshEdges(mesh);
   deformation_ = std::make_unique<DeformationEnergy>(triangles, keys_, mesh.stiffnesses());
   cohesive_ = std::make_unique<CohesiveEnergy>(mesh, keys_, params.cohesive);
-  mass_ = deformation_->lumpedAreas();
 
   // Mean diagonal of the ARAP matrix at uniform weights: the stiffness scale of one vertex.
   const Eigen::VectorXd uniform = Eigen::VectorXd::Constant(keyCount(), 1.0 / keyCount());
@@ -120,7 +120,11 @@ Interpolator::Frame Interpolator::makeFrame(const Eigen::VectorXd& w) const {
   f.w = w;
   f.keys = activeKeys(w);
   f.blend = Eigen::MatrixX2d::Zero(vertexCount(), 2);
-  for (size_t a = 0; a < f.keys.index.size(); ++a) f.blend += f.keys.weight[a] * keys_[f.keys.index[a]];
+  f.mass = Eigen::VectorXd::Zero(vertexCount());
+  for (size_t a = 0; a < f.keys.index.size(); ++a) {
+    f.blend += f.keys.weight[a] * keys_[f.keys.index[a]];
+    f.mass += f.keys.weight[a] * deformation_->lumpedAreas().col(f.keys.index[a]);
+  }
   f.participants = nonOverlap_->participants(f.keys);
   return f;
 }
@@ -134,9 +138,9 @@ void Interpolator::evaluateState(const Frame& frame, State& s) const {
 #pragma omp parallel for schedule(static) reduction(+ : placement) num_threads(threads_)
   for (int v = 0; v < n; ++v) {
     const double dx = s.x(v, 0) - frame.blend(v, 0), dy = s.x(v, 1) - frame.blend(v, 1);
-    placement += mass_(v) * (dx * dx + dy * dy);
-    s.gradient(v, 0) = mu * mass_(v) * dx;
-    s.gradient(v, 1) = mu * mass_(v) * dy;
+    placement += frame.mass(v) * (dx * dx + dy * dy);
+    s.gradient(v, 0) = mu * frame.mass(v) * dx;
+    s.gradient(v, 1) = mu * frame.mass(v) * dy;
   }
   s.placement = 0.5 * mu * placement;
   s.energy = s.placement;
@@ -165,7 +169,7 @@ void Interpolator::align(const Frame& frame, const State& reference, Eigen::Matr
     groups_.update(links);
     groupLinks_ = std::move(links);
   }
-  alignGroups(x, frame.blend, mass_, groups_);
+  alignGroups(x, frame.blend, frame.mass, groups_);
 }
 
 Eigen::SparseMatrix<double> Interpolator::globalMatrix(const Eigen::VectorXd& w, const std::vector<char>& active) const {
@@ -194,7 +198,8 @@ Eigen::SparseMatrix<double> Interpolator::globalMatrix(const Eigen::VectorXd& w,
         entries.emplace_back(vert[r], vert[c], k * block * sign[r] * sign[c]);
       }
   }
-  for (int v = 0; v < n; ++v) entries.emplace_back(v, v, options_.placementStiffness * mass_(v));
+  const Eigen::VectorXd mass = deformation_->lumpedAreas() * w;  // m_v(w)
+  for (int v = 0; v < n; ++v) entries.emplace_back(v, v, options_.placementStiffness * mass(v));
   if (params_.nonOverlap)
     for (int v : nonOverlap_->allBoundaryVertices()) entries.emplace_back(v, v, nonOverlap_->stiffness());
   Eigen::SparseMatrix<double> H(n, n);

@@ -92,7 +92,7 @@ class Interpolator {
 
   double shapeSize() const { return scale_; }
   int keyCount() const { return static_cast<int>(keys_.size()); }
-  int vertexCount() const { return static_cast<int>(mass_.size()); }
+  int vertexCount() const { return static_cast<int>(keys_.front().rows()); }
   int threads() const { return threads_; }
   long factorNonZeros() const { return factor_.factorNonZeros(); }
 
@@ -114,7 +114,6 @@ class Interpolator {
   double scale_ = 1;                       // shape size s
   std::vector<Eigen::MatrixX2d> keys_;     // X_i / s
   std::vector<std::pair<int, int>> edges_; // mesh edges
-  Eigen::VectorXd mass_;                   // lumped vertex areas m_v (normalized)
   std::unique_ptr<DeformationEnergy> deformation_;
   std::unique_ptr<CohesiveEnergy> cohesive_;
   std::unique_ptr<NonOverlap> nonOverlap_;  // always built; used when params_.nonOverlap

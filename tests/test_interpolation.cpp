@@ -213,3 +213,12 @@ TEST_CASE("interpolation: out-of-range parameters name the parameter") {
   Multimesh empty(4, {{0, 1, 2}, {0, 2, 3}});
   REQUIRE_THROWS_WITH(Interpolator(empty, {}, SolverOptions{}), Catch::Contains("m = 0"));
 }
+
+TEST_CASE("interpolation: keys with zero weight do not change the inbetween") {
+  // The 4-key strip's first two keys are the 2-key strip.
+  const auto two = test::strip(400, 2), four = test::strip(400, 4);
+  const InterpolationResult a = Interpolator(two.mesh, {}, tight()).solve(Eigen::Vector2d(0.3, 0.7));
+  const InterpolationResult b = Interpolator(four.mesh, {}, tight()).solve(Eigen::Vector4d(0.3, 0.7, 0, 0));
+  // Only the weak placement tie sees the extra keys (through the shape size that normalizes it).
+  REQUIRE((a.x - b.x).cwiseAbs().maxCoeff() < 1e-4 * two.size);
+}
