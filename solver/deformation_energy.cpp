@@ -50,7 +50,6 @@ DeformationEnergy::DeformationEnergy(const std::vector<Triangle>& triangles, con
     corner_[c].resize(t);
     for (int k = 0; k < t; ++k) corner_[c][k] = triangles_[k][c];
   }
-  lumpedArea_ = Eigen::MatrixXd::Zero(n, m);
   for (int k = 0; k < t; ++k) {
     for (int i = 0; i < m; ++i) {
       const Eigen::Matrix2d D = edgeMatrix(keys[i], triangles_[k]);
@@ -64,7 +63,6 @@ DeformationEnergy::DeformationEnergy(const std::vector<Triangle>& triangles, con
       r[2 * t + k] = B(0, 1);
       r[3 * t + k] = B(1, 1);
       r[4 * t + k] = kappa(k) * area;
-      for (int v : triangles_[k]) lumpedArea_(v, i) += area / 3.0;
     }
   }
   incidenceStart_.assign(n + 1, 0);

@@ -37,9 +37,6 @@ class DeformationEnergy {
   // Uses an internal scratch buffer: one evaluate() at a time per object.
   double evaluate(const Eigen::MatrixX2d& x, const ActiveKeys& keys, Eigen::MatrixX2d& gradient, int threads) const;
 
-  // Lumped vertex areas per key (n x m): one third of each incident triangle's area in key i.
-  const Eigen::MatrixXd& lumpedAreas() const { return lumpedArea_; }
-
  private:
   std::vector<Triangle> triangles_;
   int keyCount_ = 0;
@@ -49,7 +46,6 @@ class DeformationEnergy {
   std::array<std::vector<int>, 3> corner_;    // vertex of each corner, per triangle
   std::vector<int> incidenceStart_;           // CSR over vertices of (triangle, corner)
   std::vector<int> incidence_;                // 3 * t + corner
-  Eigen::MatrixXd lumpedArea_;  // n x m
   mutable std::vector<double> blocks_;           // scratch: gradient blocks G00, G10, G01, G11 (4 x t)
 };
 

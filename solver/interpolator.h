@@ -114,6 +114,7 @@ class Interpolator {
   double scale_ = 1;                       // shape size s
   std::vector<Eigen::MatrixX2d> keys_;     // X_i / s
   std::vector<std::pair<int, int>> edges_; // mesh edges
+  Eigen::VectorXd mass_;                   // placement weight m_v of each vertex (see placement.h)
   std::unique_ptr<DeformationEnergy> deformation_;
   std::unique_ptr<CohesiveEnergy> cohesive_;
   std::unique_ptr<NonOverlap> nonOverlap_;  // always built; used when params_.nonOverlap
