@@ -7,7 +7,7 @@ build=${1:-"$here/build"}
 
 packages=(
   build-essential cmake pkg-config git
-  libeigen3-dev libopenmesh-dev catch2 nlohmann-json3-dev
+  libeigen3-dev libmetis-dev libopenmesh-dev catch2 nlohmann-json3-dev
   libcgal-dev libpotrace-dev libpng-dev
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers glslang-tools
   libglfw3-dev libglm-dev libimgui-dev libtinygltf-dev libstb-dev
