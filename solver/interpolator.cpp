@@ -236,6 +236,40 @@ int Interpolator::countOverlaps(const Eigen::MatrixX2d& x, const Eigen::VectorXd
   return nonOverlap_->countInside(x / scale_, makeFrame(w).participants);
 }
 
+Interpolator::Step Interpolator::step(const Frame& frame, const State& s, State& candidate, Eigen::MatrixX2d& plain,
+                                      InterpolationResult& result) {
+  const double slack = 1e-12 * std::abs(result.startEnergy);  // rounding noise in E
+  const auto tryCandidate = [&]() {
+    evaluateState(frame, candidate);
+    ++result.evaluations;
+    return candidate.energy <= s.energy + slack;
+  };
+  // The plain local-global step G(x) = x - H^{-1} g, placed rigidly.
+  plain = s.gradient;
+  factor_.solve(plain);
+  plain = s.x - plain;
+  align(frame, s, plain);
+  candidate.x.resize(vertexCount(), 2);
+  anderson_.next(flat(plain), flat(s.gradient), flatMutable(candidate.x));
+  if (tryCandidate()) return Step::kAccepted;
+  if (options_.andersonDepth > 0) {
+    anderson_.reset();
+    candidate.x = plain;
+    if (tryCandidate()) return Step::kAccepted;
+  }
+  if (s.active != factorActive_) {
+    // Cohesive pairs engaged or let go since H was built: H no longer models the energy.
+    refactorize(frame.w, s.active, result);
+    anderson_.reset();
+    return Step::kRefactorized;
+  }
+  for (double beta = 0.5; beta > 1e-3; beta *= 0.5) {
+    candidate.x = s.x + beta * (plain - s.x);
+    if (tryCandidate()) return Step::kAccepted;
+  }
+  return Step::kStalled;
+}
+
 InterpolationResult Interpolator::solve(const Eigen::VectorXd& w, const Eigen::MatrixX2d* warmStart) {
   const auto started = std::chrono::steady_clock::now();
   const Frame frame = makeFrame(w);
@@ -258,7 +292,6 @@ InterpolationResult Interpolator::solve(const Eigen::VectorXd& w, const Eigen::M
   result.startEnergy = s.energy;
   result.energyHistory.push_back(s.energy);
   const double startNorm = infinityNorm(s.gradient);
-  const double slack = 1e-12 * std::abs(s.energy);
   // The fixed-point map of this frame is close to the last one's (it moves continuously with w,
   // also where a weight reaches or leaves zero), so the secant history seeds this frame. A
   // refactorized H changes the map more, but measurably less than dropping the history costs;
@@ -272,37 +305,11 @@ InterpolationResult Interpolator::solve(const Eigen::VectorXd& w, const Eigen::M
   result.residualHistory.push_back(relative(norm));
 
   State candidate;
-  Eigen::MatrixX2d plain;  // the plain local-global step G(x)
+  Eigen::MatrixX2d plain;
   while (norm > target && result.iterations < options_.maxIterations) {
-    plain = s.gradient;
-    factor_.solve(plain);  // H^{-1} g
-    plain = s.x - plain;
-    align(frame, s, plain);
-    candidate.x.resize(vertexCount(), 2);
-    anderson_.next(flat(plain), flat(s.gradient), flatMutable(candidate.x));
-    evaluateState(frame, candidate);
-    ++result.evaluations;
-    bool accepted = candidate.energy <= s.energy + slack;
-    if (!accepted && options_.andersonDepth > 0) {
-      anderson_.reset();
-      candidate.x = plain;
-      evaluateState(frame, candidate);
-      ++result.evaluations;
-      accepted = candidate.energy <= s.energy + slack;
-    }
-    if (!accepted && s.active != factorActive_) {
-      // Cohesive pairs engaged or let go since H was built: H no longer models the energy.
-      refactorize(w, s.active, result);
-      anderson_.reset();
-      continue;
-    }
-    for (double beta = 0.5; !accepted && beta > 1e-3; beta *= 0.5) {
-      candidate.x = s.x + beta * (plain - s.x);
-      evaluateState(frame, candidate);
-      ++result.evaluations;
-      accepted = candidate.energy <= s.energy + slack;
-    }
-    if (!accepted) break;  // no decrease along the step: stalled, reported as not converged
+    const Step outcome = step(frame, s, candidate, plain, result);
+    if (outcome == Step::kRefactorized) continue;
+    if (outcome == Step::kStalled) break;  // no decrease along the step: reported as not converged
     std::swap(s, candidate);
     ++result.iterations;
     result.energyHistory.push_back(s.energy);

@@ -104,6 +104,11 @@ class Interpolator {
   // Only what placement groups need: active cohesive pairs and non-overlap contacts.
   void evaluateLinks(const Frame& frame, State& state) const;
   void align(const Frame& frame, const State& reference, Eigen::MatrixX2d& x);
+  // One safeguarded iteration from s: the Anderson candidate, else the plain step, else (if the
+  // active cohesive set changed) a refactorization to retry with, else a backtracked plain
+  // step. On kAccepted the new iterate is in candidate; plain is scratch.
+  enum class Step { kAccepted, kRefactorized, kStalled };
+  Step step(const Frame& frame, const State& s, State& candidate, Eigen::MatrixX2d& plain, InterpolationResult& result);
   void ensureFactorization(const Eigen::VectorXd& w, const std::vector<char>& active, InterpolationResult& result);
   void refactorize(const Eigen::VectorXd& w, const std::vector<char>& active, InterpolationResult& result);
   Eigen::SparseMatrix<double> globalMatrix(const Eigen::VectorXd& w, const std::vector<char>& active) const;
