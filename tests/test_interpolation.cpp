@@ -184,7 +184,7 @@ TEST_CASE("interpolation: analytic gradients agree with central finite differenc
     }
 }
 
-TEST_CASE("interpolation: bad weights are input errors, never NaN output") {
+TEST_CASE("interpolation: bad weights and wrong-sized positions are input errors, never NaN output") {
   const auto f = test::strip(100, 2);
   Interpolator solver(f.mesh, {}, SolverOptions{});
   REQUIRE_THROWS_WITH(solver.solve(Eigen::Vector3d(0.2, 0.3, 0.5)), Catch::Contains("expected 2 values"));
@@ -194,6 +194,9 @@ TEST_CASE("interpolation: bad weights are input errors, never NaN output") {
   Eigen::MatrixX2d badStart = f.mesh.keyPositions(0);
   badStart(3, 0) = std::numeric_limits<double>::infinity();
   REQUIRE_THROWS_AS(solver.solve(Eigen::Vector2d(0.5, 0.5), &badStart), InputError);
+  const Eigen::MatrixX2d shortStart = f.mesh.keyPositions(0).topRows(10);
+  REQUIRE_THROWS_WITH(solver.solve(Eigen::Vector2d(0.5, 0.5), &shortStart), Catch::Contains("warm start"));
+  REQUIRE_THROWS_AS(solver.evaluate(shortStart, Eigen::Vector2d(0.5, 0.5)), InputError);
 }
 
 TEST_CASE("interpolation: out-of-range parameters name the parameter") {
