@@ -99,13 +99,12 @@ Interpolator::Interpolator(const Multimesh& mesh, const InterpolationParams& par
   }
   scale_ = std::sqrt(meanArea);
   for (auto& X : keys_) X /= scale_;
-  edges_ = meshEdges(mesh);
   deformation_ = std::make_unique<DeformationEnergy>(triangles, keys_, mesh.stiffnesses());
   // The same weight for every vertex (the normalized area, 1, shared out): it must not change
   // from frame to frame, or the rigid part of the carried Anderson history goes stale (measured:
   // about 15% more iterations with area weights blended by w), and it must not depend on keys
   // with zero weight.
-  mass_ = Eigen::VectorXd::Constant(mesh.vertexCount(), 1.0 / mesh.vertexCount());
+  vertexWeight_ = 1.0 / mesh.vertexCount();
   cohesive_ = std::make_unique<CohesiveEnergy>(mesh, keys_, params.cohesive);
 
   // Mean diagonal of the ARAP matrix at uniform weights: the stiffness scale of one vertex.
@@ -133,16 +132,16 @@ void Interpolator::evaluateState(const Frame& frame, State& s) const {
   const int n = vertexCount();
   s.gradient.resize(n, 2);
   // E_P first: it also initializes the gradient.
-  const double mu = options_.placementStiffness;
+  const double tie = options_.placementStiffness * vertexWeight_;  // mu m_v
   double placement = 0;
 #pragma omp parallel for schedule(static) reduction(+ : placement) num_threads(threads_)
   for (int v = 0; v < n; ++v) {
     const double dx = s.x(v, 0) - frame.blend(v, 0), dy = s.x(v, 1) - frame.blend(v, 1);
-    placement += mass_(v) * (dx * dx + dy * dy);
-    s.gradient(v, 0) = mu * mass_(v) * dx;
-    s.gradient(v, 1) = mu * mass_(v) * dy;
+    placement += dx * dx + dy * dy;
+    s.gradient(v, 0) = tie * dx;
+    s.gradient(v, 1) = tie * dy;
   }
-  s.placement = 0.5 * mu * placement;
+  s.placement = 0.5 * tie * placement;
   s.energy = s.placement;
   s.energy += deformation_->evaluate(s.x, frame.keys, s.gradient, threads_);
   s.energy += cohesive_->evaluate(s.x, frame.w, s.gradient, s.active);
@@ -169,7 +168,7 @@ void Interpolator::align(const Frame& frame, const State& reference, Eigen::Matr
     groups_.update(links);
     groupLinks_ = std::move(links);
   }
-  alignGroups(x, frame.blend, mass_, groups_);
+  alignGroups(x, frame.blend, groups_);
 }
 
 Eigen::SparseMatrix<double> Interpolator::globalMatrix(const Eigen::VectorXd& w, const std::vector<char>& active) const {
@@ -198,7 +197,7 @@ Eigen::SparseMatrix<double> Interpolator::globalMatrix(const Eigen::VectorXd& w,
         entries.emplace_back(vert[r], vert[c], k * block * sign[r] * sign[c]);
       }
   }
-  for (int v = 0; v < n; ++v) entries.emplace_back(v, v, options_.placementStiffness * mass_(v));
+  for (int v = 0; v < n; ++v) entries.emplace_back(v, v, options_.placementStiffness * vertexWeight_);
   if (params_.nonOverlap)
     for (int v : nonOverlap_->allBoundaryVertices()) entries.emplace_back(v, v, nonOverlap_->stiffness());
   Eigen::SparseMatrix<double> H(n, n);

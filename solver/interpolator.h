@@ -118,8 +118,7 @@ class Interpolator {
   int threads_ = 1;
   double scale_ = 1;                       // shape size s
   std::vector<Eigen::MatrixX2d> keys_;     // X_i / s
-  std::vector<std::pair<int, int>> edges_; // mesh edges
-  Eigen::VectorXd mass_;                   // placement weight m_v of each vertex (see placement.h)
+  double vertexWeight_ = 0;                // placement weight m_v = 1/n of every vertex (placement.h)
   std::unique_ptr<DeformationEnergy> deformation_;
   std::unique_ptr<CohesiveEnergy> cohesive_;
   std::unique_ptr<NonOverlap> nonOverlap_;  // always built; used when params_.nonOverlap

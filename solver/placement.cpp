@@ -64,34 +64,32 @@ void PlacementGroups::buildMembers() {
 
 namespace {
 
-// Aligns the vertices index(0..count-1) of x rigidly to target: weighted centroids, then the
-// angle atan2(sum m (p x q), sum m (p . q)) of the centred point sets p (x) and q (target).
+// Aligns the vertices index(0..count-1) of x rigidly to target: centroids, then the angle
+// atan2(sum p x q, sum p . q) of the centred point sets p (x) and q (target).
 template <class Index>
-void alignSet(Eigen::MatrixX2d& x, const Eigen::MatrixX2d& target, const Eigen::VectorXd& mass, int count, Index index) {
+void alignSet(Eigen::MatrixX2d& x, const Eigen::MatrixX2d& target, int count, Index index) {
   double* px = x.col(0).data();
   double* py = x.col(1).data();
   const double* tx = target.col(0).data();
   const double* ty = target.col(1).data();
-  const double* m = mass.data();
-  double total = 0, cx = 0, cy = 0, qx = 0, qy = 0;
+  double cx = 0, cy = 0, qx = 0, qy = 0;
   for (int i = 0; i < count; ++i) {
     const int v = index(i);
-    total += m[v];
-    cx += m[v] * px[v];
-    cy += m[v] * py[v];
-    qx += m[v] * tx[v];
-    qy += m[v] * ty[v];
+    cx += px[v];
+    cy += py[v];
+    qx += tx[v];
+    qy += ty[v];
   }
-  cx /= total;
-  cy /= total;
-  qx /= total;
-  qy /= total;
+  cx /= count;
+  cy /= count;
+  qx /= count;
+  qy /= count;
   double dot = 0, cross = 0;
   for (int i = 0; i < count; ++i) {
     const int v = index(i);
     const double ax = px[v] - cx, ay = py[v] - cy, bx = tx[v] - qx, by = ty[v] - qy;
-    dot += m[v] * (ax * bx + ay * by);
-    cross += m[v] * (ax * by - ay * bx);
+    dot += ax * bx + ay * by;
+    cross += ax * by - ay * bx;
   }
   const double angle = std::atan2(cross, dot), c = std::cos(angle), s = std::sin(angle);
   for (int i = 0; i < count; ++i) {
@@ -104,17 +102,16 @@ void alignSet(Eigen::MatrixX2d& x, const Eigen::MatrixX2d& target, const Eigen::
 
 }  // namespace
 
-void alignGroups(Eigen::MatrixX2d& x, const Eigen::MatrixX2d& target, const Eigen::VectorXd& mass,
-                 const PlacementGroups& groups) {
+void alignGroups(Eigen::MatrixX2d& x, const Eigen::MatrixX2d& target, const PlacementGroups& groups) {
   if (groups.groupCount() == 1) {  // the common case, without indirection
-    alignSet(x, target, mass, static_cast<int>(x.rows()), [](int i) { return i; });
+    alignSet(x, target, static_cast<int>(x.rows()), [](int i) { return i; });
     return;
   }
   const auto& start = groups.memberStart();
   const auto& members = groups.members();
   for (int k = 0; k < groups.groupCount(); ++k) {
     const int* list = members.data() + start[k];
-    alignSet(x, target, mass, start[k + 1] - start[k], [list](int i) { return list[i]; });
+    alignSet(x, target, start[k + 1] - start[k], [list](int i) { return list[i]; });
   }
 }
 

@@ -35,8 +35,7 @@ class PlacementGroups {
 };
 
 // Applies, per group, the rigid motion (rotation + translation) minimizing
-// sum_v m_v |R x_v + t - target_v|^2. x, target: n x 2; mass: n x 1, positive.
-void alignGroups(Eigen::MatrixX2d& x, const Eigen::MatrixX2d& target, const Eigen::VectorXd& mass,
-                 const PlacementGroups& groups);
+// sum_v |R x_v + t - target_v|^2 (m_v is the same for all vertices). x, target: n x 2.
+void alignGroups(Eigen::MatrixX2d& x, const Eigen::MatrixX2d& target, const PlacementGroups& groups);
 
 }  // namespace ib
