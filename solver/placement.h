@@ -2,8 +2,8 @@
 // form, so a rigid motion of any independently moving group of vertices is free. The solver
 // fixes it with a weak tie to the linear blend of the keys, Xbar(w) = sum_i w_i X_i:
 //   E_P = mu/2 sum_v m_v |x_v - Xbar_v|^2     (m_v = 1/n in normalized area units, mu small)
-// and, every iteration, moves each group by the rigid motion that minimizes E_P (weighted
-// Procrustes), which leaves the other energies unchanged. At w = e_i the minimizer is X_i
+// and, every iteration, moves each group by the rigid motion that minimizes E_P (Procrustes),
+// which leaves the other energies unchanged. At w = e_i the minimizer is X_i
 // itself, where it was drawn; inbetweens depend only on w, so they cannot drift.
 #pragma once
 
