@@ -18,14 +18,10 @@ ActiveKeys activeKeys(const Eigen::VectorXd& w) {
 }
 
 Eigen::Matrix2d closestRotation(const Eigen::Matrix2d& F) {
-  // Maximizes tr(R^T F) = cos(theta) (F00 + F11) + sin(theta) (F10 - F01).
-  const double s = F(0, 0) + F(1, 1), r = F(1, 0) - F(0, 1);
-  const double norm2 = s * s + r * r;
+  double c, s;
+  closestRotation(F(0, 0), F(0, 1), F(1, 0), F(1, 1), c, s);
   Eigen::Matrix2d R;
-  if (!(norm2 > 1e-300)) return Eigen::Matrix2d::Identity();
-  const double inverse = 1.0 / std::sqrt(norm2);
-  const double c = s * inverse, sn = r * inverse;
-  R << c, -sn, sn, c;
+  R << c, -s, s, c;
   return R;
 }
 
@@ -57,7 +53,7 @@ DeformationEnergy::DeformationEnergy(const std::vector<Triangle>& triangles, con
       if (!(area > 0))
         throw InputError("triangle " + std::to_string(k) + " is degenerate or inverted in key " + std::to_string(i));
       const Eigen::Matrix2d B = D.inverse();
-      double* r = rest_.data() + static_cast<size_t>(i) * 5 * t;
+      double* r = rest_.data() + static_cast<size_t>(i) * 5 * t;  // the layout restOf() reads
       r[k] = B(0, 0);
       r[t + k] = B(1, 0);
       r[2 * t + k] = B(0, 1);
@@ -77,10 +73,10 @@ DeformationEnergy::DeformationEnergy(const std::vector<Triangle>& triangles, con
 
 std::vector<Eigen::Matrix2d> DeformationEnergy::metrics(const ActiveKeys& keys) const {
   std::vector<Eigen::Matrix2d> M(triangles_.size(), Eigen::Matrix2d::Zero());
-  for (int k = 0; k < triangleCount(); ++k)
+  const int t = triangleCount();
+  for (int k = 0; k < t; ++k)
     for (size_t a = 0; a < keys.index.size(); ++a) {
-      const int t = triangleCount();
-      const double* r = rest_.data() + static_cast<size_t>(keys.index[a]) * 5 * t;
+      const double* r = restOf(keys.index[a]);
       Eigen::Matrix2d B;
       B << r[k], r[2 * t + k], r[t + k], r[3 * t + k];
       M[k] += 2.0 * keys.weight[a] * r[4 * t + k] * B * B.transpose();
@@ -109,7 +105,7 @@ double DeformationEnergy::evaluate(const Eigen::MatrixX2d& x, const ActiveKeys& 
 #pragma omp for schedule(static)
     for (int k = 0; k < t; ++k) G00[k] = G10[k] = G01[k] = G11[k] = 0.0;
     for (int a = 0; a < active; ++a) {
-      const double* r = rest_.data() + static_cast<size_t>(keys.index[a]) * 5 * t;  // B00 B10 B01 B11 c
+      const double* r = restOf(keys.index[a]);  // B00 B10 B01 B11 c
       const double* b00 = r;
       const double* b10 = r + t;
       const double* b01 = r + 2 * t;
@@ -123,11 +119,8 @@ double DeformationEnergy::evaluate(const Eigen::MatrixX2d& x, const ActiveKeys& 
         const double d10 = py[c1[k]] - py[c0[k]], d11 = py[c2[k]] - py[c0[k]];
         const double f00 = d00 * b00[k] + d01 * b10[k], f01 = d00 * b01[k] + d01 * b11[k];
         const double f10 = d10 * b00[k] + d11 * b10[k], f11 = d10 * b01[k] + d11 * b11[k];
-        // Closest rotation: (cos, sin) along (f00 + f11, f10 - f01).
-        const double sc = f00 + f11, sn = f10 - f01, norm2 = sc * sc + sn * sn;
-        const bool ok = norm2 > 1e-300;
-        const double inv = 1.0 / std::sqrt(ok ? norm2 : 1.0);
-        const double c = ok ? sc * inv : 1.0, s = ok ? sn * inv : 0.0;
+        double c, s;
+        closestRotation(f00, f01, f10, f11, c, s);
         const double e00 = f00 - c, e01 = f01 + s, e10 = f10 - s, e11 = f11 - c;  // F - R
         const double weight = w * cw[k];
         energy += weight * (e00 * e00 + e01 * e01 + e10 * e10 + e11 * e11);

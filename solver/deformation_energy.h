@@ -8,6 +8,7 @@
 
 #include <Eigen/Core>
 #include <array>
+#include <cmath>
 #include <vector>
 
 namespace ib {
@@ -43,13 +44,26 @@ class DeformationEnergy {
   // Per key i, five arrays over triangles (structure of arrays, so the local step vectorizes):
   // B_ti = D(X_i)^{-1} entries b00, b10, b01, b11, then c_ti = kappa_t * area_ti.
   std::vector<double> rest_;                  // m x 5 x t
+  const double* restOf(int key) const { return rest_.data() + static_cast<size_t>(key) * 5 * triangles_.size(); }
   std::array<std::vector<int>, 3> corner_;    // vertex of each corner, per triangle
   std::vector<int> incidenceStart_;           // CSR over vertices of (triangle, corner)
   std::vector<int> incidence_;                // 3 * t + corner
   mutable std::vector<double> blocks_;           // scratch: gradient blocks G00, G10, G01, G11 (4 x t)
 };
 
-// Rotation closest to F in the Frobenius norm (2D polar decomposition, valid for any F).
+// Cosine and sine of the rotation closest to F = [f00 f01; f10 f11] in the Frobenius norm (2D
+// polar decomposition, valid for any F): it maximizes tr(R^T F) = c (f00 + f11) + s (f10 - f01).
+// Branch-free, so the local step vectorizes across triangles; the identity for F with no
+// rotational part.
+inline void closestRotation(double f00, double f01, double f10, double f11, double& c, double& s) {
+  const double sc = f00 + f11, sn = f10 - f01, norm2 = sc * sc + sn * sn;
+  const bool ok = norm2 > 1e-300;
+  const double inverse = 1.0 / std::sqrt(ok ? norm2 : 1.0);
+  c = ok ? sc * inverse : 1.0;
+  s = ok ? sn * inverse : 0.0;
+}
+
+// The same as a matrix.
 Eigen::Matrix2d closestRotation(const Eigen::Matrix2d& F);
 
 }  // namespace ib
