@@ -117,26 +117,21 @@ NonOverlap::Grids NonOverlap::buildGrids(const Eigen::MatrixX2d& x) const {
   return {BoxGrid(lo, hi, cell), BoxGrid(elo, ehi, cell)};
 }
 
-bool NonOverlap::detect(const Eigen::MatrixX2d& x, const Grids& grids, int v, Offender& o) const {
-  const Eigen::Vector2d p = x.row(v).transpose();
-  for (int k : grids.triangles.itemsAt(p)) {
-    const auto& tri = triangles_[k];
-    if (excluded(v, tri[0]) || excluded(v, tri[1]) || excluded(v, tri[2])) continue;
-    if (interiorPoint(p, x, k)) {
-      o = {v, k, p};
-      return true;
-    }
-  }
-  return false;
-}
-
-bool NonOverlap::inside(const Eigen::MatrixX2d& x, const Grids& grids, const Eigen::Vector2d& q, int v) const {
+int NonOverlap::coveringTriangle(const Eigen::MatrixX2d& x, const Grids& grids, const Eigen::Vector2d& q, int v) const {
   for (int k : grids.triangles.itemsAt(q)) {
     const auto& tri = triangles_[k];
     if (excluded(v, tri[0]) || excluded(v, tri[1]) || excluded(v, tri[2])) continue;
-    if (interiorPoint(q, x, k)) return true;
+    if (interiorPoint(q, x, k)) return k;
   }
-  return false;
+  return -1;
+}
+
+bool NonOverlap::detect(const Eigen::MatrixX2d& x, const Grids& grids, int v, Offender& o) const {
+  const Eigen::Vector2d p = x.row(v).transpose();
+  const int k = coveringTriangle(x, grids, p, v);
+  if (k < 0) return false;
+  o = {v, k, p};
+  return true;
 }
 
 void NonOverlap::findTarget(const Eigen::MatrixX2d& x, const Grids& grids, Offender& o) const {
@@ -153,7 +148,7 @@ void NonOverlap::findTarget(const Eigen::MatrixX2d& x, const Grids& grids, Offen
       const double t = segmentParameter(p, xa, xb);
       const Eigen::Vector2d q = xa + t * (xb - xa);
       const double d = (q - p).norm();
-      if (d < best && !inside(x, grids, q, o.vertex)) {
+      if (d < best && coveringTriangle(x, grids, q, o.vertex) < 0) {
         best = d;
         o.target = q;
         o.edgeA = a;
@@ -167,9 +162,13 @@ void NonOverlap::findTarget(const Eigen::MatrixX2d& x, const Grids& grids, Offen
 
 std::vector<NonOverlap::Offender> NonOverlap::offenders(const Eigen::MatrixX2d& x, const std::vector<int>& participants,
                                                         bool withTargets) const {
+  if (participants.empty()) return {};
+  return offenders(x, buildGrids(x), participants, withTargets);
+}
+
+std::vector<NonOverlap::Offender> NonOverlap::offenders(const Eigen::MatrixX2d& x, const Grids& grids,
+                                                        const std::vector<int>& participants, bool withTargets) const {
   std::vector<Offender> out;
-  if (participants.empty()) return out;
-  const Grids grids = buildGrids(x);
   Offender o;
   for (int v : participants)
     if (detect(x, grids, v, o)) {
@@ -198,13 +197,13 @@ double NonOverlap::evaluate(const Eigen::MatrixX2d& x, const std::vector<int>& p
 
 int NonOverlap::project(Eigen::MatrixX2d& x, const std::vector<int>& participants, int passes) const {
   for (int pass = 0; pass < passes; ++pass) {
-    const auto found = offenders(x, participants, false);
+    const Grids grids = buildGrids(x);
+    const auto found = offenders(x, grids, participants, false);
     if (found.empty()) return 0;
     // One offender at a time, each re-checked against the positions moved before it (with this
     // pass's grids), and set past the edge, away from the triangle it was in, by a margin that
     // grows with every pass: that breaks the cycles of two offenders pushing each other back
     // in at a tangent contact.
-    const Grids grids = buildGrids(x);
     const double margin = std::min(0.25, 1e-3 * std::pow(4.0, pass));  // times the edge length
     Offender o;
     for (const Offender& stale : found) {

@@ -58,11 +58,13 @@ class NonOverlap {
   Grids buildGrids(const Eigen::MatrixX2d& x) const;
   // Whether vertex v lies inside a triangle not incident to it; fills o (without a target).
   bool detect(const Eigen::MatrixX2d& x, const Grids& grids, int v, Offender& o) const;
-  // Whether point q is in the mesh interior, ignoring triangles incident to vertex v.
-  bool inside(const Eigen::MatrixX2d& x, const Grids& grids, const Eigen::Vector2d& q, int v) const;
+  // A triangle not incident to vertex v (nor its cohesive partners) whose interior holds q, or -1.
+  int coveringTriangle(const Eigen::MatrixX2d& x, const Grids& grids, const Eigen::Vector2d& q, int v) const;
   // Nearest feasible point for o (edgeA stays -1 if there is none).
   void findTarget(const Eigen::MatrixX2d& x, const Grids& grids, Offender& o) const;
   std::vector<Offender> offenders(const Eigen::MatrixX2d& x, const std::vector<int>& participants, bool withTargets) const;
+  std::vector<Offender> offenders(const Eigen::MatrixX2d& x, const Grids& grids, const std::vector<int>& participants,
+                                  bool withTargets) const;
   bool excluded(int vertex, int other) const;  // other is vertex itself or a cohesive partner
   // p in the interior of the mesh through triangle k: inside the closed triangle, and not on a
   // mesh boundary edge or boundary vertex (interior edges and vertices are interior).
