@@ -50,29 +50,46 @@ void AndersonAcceleration::next(const Eigen::Ref<const Eigen::VectorXd>& gx,
     if (stored_ < depth_) ++stored_;
   }
   // One pass over row blocks, one block per thread: store the new differences, form the new
-  // Gram row and dF^T f, and remember (f, G(x)) for the next call. Every operation runs down
-  // a column segment, so it vectorizes.
+  // Gram row and dF^T f, and remember (f, G(x)) for the next call. Plain loops with explicit
+  // simd reductions: the float-to-double products vectorize.
   const int cols = stored_, fresh = newest_;
   double sums[2 * kMaxDepth] = {};  // [gram row | dF^T f]
 #pragma omp parallel num_threads(threads_)
   {
     const auto [first, count] = rowBlock(size);
-    double gramRow[kMaxDepth] = {}, projected[kMaxDepth] = {};
-    const auto fBlock = f.segment(first, count);
+    const double* fb = f.data() + first;
+    const double* gb = gx.data() + first;
+    double* pf = previousF_.data() + first;
+    double* pg = previousG_.data() + first;
+    float* newF = dF_.col(std::max(fresh, 0)).data() + first;
+    float* newG = dG_.col(std::max(fresh, 0)).data() + first;
     if (append) {
-      dF_.col(fresh).segment(first, count) = (fBlock - previousF_.segment(first, count)).cast<float>();
-      dG_.col(fresh).segment(first, count) = (gx.segment(first, count) - previousG_.segment(first, count)).cast<float>();
+#pragma omp simd
+      for (Eigen::Index r = 0; r < count; ++r) {
+        newF[r] = static_cast<float>(fb[r] - pf[r]);
+        newG[r] = static_cast<float>(gb[r] - pg[r]);
+      }
     }
+    double gramRow[kMaxDepth] = {}, projected[kMaxDepth] = {};
     for (int j = 0; j < cols; ++j) {
-      const auto column = dF_.col(j).segment(first, count).cast<double>();
-      if (append) gramRow[j] = column.dot(dF_.col(fresh).segment(first, count).cast<double>());
-      projected[j] = column.dot(fBlock);
+      const float* column = dF_.col(j).data() + first;
+      double gram = 0, projection = 0;
+#pragma omp simd reduction(+ : gram, projection)
+      for (Eigen::Index r = 0; r < count; ++r) {
+        gram += static_cast<double>(column[r]) * newF[r];
+        projection += static_cast<double>(column[r]) * fb[r];
+      }
+      gramRow[j] = gram;
+      projected[j] = projection;
     }
-    previousF_.segment(first, count) = fBlock;
-    previousG_.segment(first, count) = gx.segment(first, count);
+#pragma omp simd
+    for (Eigen::Index r = 0; r < count; ++r) {
+      pf[r] = fb[r];
+      pg[r] = gb[r];
+    }
 #pragma omp critical
     for (int j = 0; j < cols; ++j) {
-      sums[j] += gramRow[j];
+      sums[j] += append ? gramRow[j] : 0.0;
       sums[kMaxDepth + j] += projected[j];
     }
   }
@@ -97,9 +114,16 @@ void AndersonAcceleration::next(const Eigen::Ref<const Eigen::VectorXd>& gx,
 #pragma omp parallel num_threads(threads_)
   {
     const auto [first, count] = rowBlock(size);
-    auto block = out.segment(first, count);
-    block = gx.segment(first, count);
-    for (int j = 0; j < cols; ++j) block -= gamma(j) * dG_.col(j).segment(first, count).cast<double>();
+    double* o = out.data() + first;
+    const double* gb = gx.data() + first;
+#pragma omp simd
+    for (Eigen::Index r = 0; r < count; ++r) o[r] = gb[r];
+    for (int j = 0; j < cols; ++j) {
+      const float* column = dG_.col(j).data() + first;
+      const double gj = gamma(j);
+#pragma omp simd
+      for (Eigen::Index r = 0; r < count; ++r) o[r] -= gj * static_cast<double>(column[r]);
+    }
   }
 }
 

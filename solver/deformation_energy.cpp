@@ -61,14 +61,15 @@ DeformationEnergy::DeformationEnergy(const std::vector<Triangle>& triangles, con
       r[4 * t + k] = kappa(k) * area;
     }
   }
-  incidenceStart_.assign(n + 1, 0);
+  // Incidence grouped by vertex, then by the corner the vertex is: slot 3 v + c.
+  incidenceStart_.assign(3 * static_cast<size_t>(n) + 1, 0);
   for (const Triangle& tri : triangles_)
-    for (int v : tri) ++incidenceStart_[v + 1];
-  for (int v = 0; v < n; ++v) incidenceStart_[v + 1] += incidenceStart_[v];
+    for (int c = 0; c < 3; ++c) ++incidenceStart_[3 * tri[c] + c + 1];
+  for (size_t slot = 0; slot + 1 < incidenceStart_.size(); ++slot) incidenceStart_[slot + 1] += incidenceStart_[slot];
   incidence_.resize(3 * static_cast<size_t>(t));
   std::vector<int> fill(incidenceStart_.begin(), incidenceStart_.end() - 1);
   for (int k = 0; k < t; ++k)
-    for (int c = 0; c < 3; ++c) incidence_[fill[triangles_[k][c]]++] = 3 * k + c;
+    for (int c = 0; c < 3; ++c) incidence_[fill[3 * triangles_[k][c] + c]++] = k;
 }
 
 std::vector<Eigen::Matrix2d> DeformationEnergy::metrics(const ActiveKeys& keys) const {
@@ -90,20 +91,33 @@ double DeformationEnergy::evaluate(const Eigen::MatrixX2d& x, const ActiveKeys& 
   const int active = static_cast<int>(keys.index.size());
   const double* px = x.col(0).data();
   const double* py = x.col(1).data();
-  // Per-triangle gradient blocks dW_D/dD_t, one array per entry so the loop vectorizes.
-  blocks_.resize(4 * static_cast<size_t>(t));
-  double* G00 = blocks_.data();
-  double* G10 = G00 + t;
-  double* G01 = G10 + t;
-  double* G11 = G01 + t;
+  // Scratch, one array per entry so the loops vectorize: edge matrices D_t, then the gradient
+  // blocks dW_D/dD_t.
+  scratch_.resize(8 * static_cast<size_t>(t));
+  double* D00 = scratch_.data();
+  double* D01 = D00 + t;
+  double* D10 = D01 + t;
+  double* D11 = D10 + t;
+  double* G00 = D11 + t;
+  double* G01 = G00 + t;
+  double* G10 = G01 + t;
+  double* G11 = G10 + t;
   const int* c0 = corner_[0].data();
   const int* c1 = corner_[1].data();
   const int* c2 = corner_[2].data();
   double energy = 0;
-#pragma omp parallel num_threads(threads) reduction(+ : energy)
+#pragma omp parallel num_threads(threads)
   {
-#pragma omp for schedule(static)
-    for (int k = 0; k < t; ++k) G00[k] = G10[k] = G01[k] = G11[k] = 0.0;
+    // Every loop over triangles has the same static schedule, so a thread only reads the
+    // entries it wrote itself: no barrier between them.
+#pragma omp for simd schedule(static) nowait
+    for (int k = 0; k < t; ++k) {
+      D00[k] = px[c1[k]] - px[c0[k]];
+      D01[k] = px[c2[k]] - px[c0[k]];
+      D10[k] = py[c1[k]] - py[c0[k]];
+      D11[k] = py[c2[k]] - py[c0[k]];
+      G00[k] = G01[k] = G10[k] = G11[k] = 0.0;
+    }
     for (int a = 0; a < active; ++a) {
       const double* r = restOf(keys.index[a]);  // B00 B10 B01 B11 c
       const double* b00 = r;
@@ -112,19 +126,16 @@ double DeformationEnergy::evaluate(const Eigen::MatrixX2d& x, const ActiveKeys& 
       const double* b11 = r + 3 * t;
       const double* cw = r + 4 * t;
       const double w = keys.weight[a];
-#pragma omp for simd schedule(static)
+#pragma omp for simd schedule(static) nowait reduction(+ : energy)
       for (int k = 0; k < t; ++k) {
-        // D = [x1 - x0, x2 - x0] (columns); F = D B.
-        const double d00 = px[c1[k]] - px[c0[k]], d01 = px[c2[k]] - px[c0[k]];
-        const double d10 = py[c1[k]] - py[c0[k]], d11 = py[c2[k]] - py[c0[k]];
-        const double f00 = d00 * b00[k] + d01 * b10[k], f01 = d00 * b01[k] + d01 * b11[k];
-        const double f10 = d10 * b00[k] + d11 * b10[k], f11 = d10 * b01[k] + d11 * b11[k];
+        // F = D B, R its closest rotation, G += 2 w c (F - R) B^T.
+        const double f00 = D00[k] * b00[k] + D01[k] * b10[k], f01 = D00[k] * b01[k] + D01[k] * b11[k];
+        const double f10 = D10[k] * b00[k] + D11[k] * b10[k], f11 = D10[k] * b01[k] + D11[k] * b11[k];
         double c, s;
         closestRotation(f00, f01, f10, f11, c, s);
         const double e00 = f00 - c, e01 = f01 + s, e10 = f10 - s, e11 = f11 - c;  // F - R
         const double weight = w * cw[k];
         energy += weight * (e00 * e00 + e01 * e01 + e10 * e10 + e11 * e11);
-        // G += 2 w c (F - R) B^T.
         const double two = 2.0 * weight;
         G00[k] += two * (e00 * b00[k] + e01 * b01[k]);
         G01[k] += two * (e00 * b10[k] + e01 * b11[k]);
@@ -132,22 +143,30 @@ double DeformationEnergy::evaluate(const Eigen::MatrixX2d& x, const ActiveKeys& 
         G11[k] += two * (e10 * b10[k] + e11 * b11[k]);
       }
     }
-  }
-  double* gx = gradient.col(0).data();
-  double* gy = gradient.col(1).data();
-#pragma omp parallel for schedule(static) num_threads(threads)
-  for (int v = 0; v < n; ++v) {
-    double ax = 0, ay = 0;
-    for (int e = incidenceStart_[v]; e < incidenceStart_[v + 1]; ++e) {
-      const int k = incidence_[e] / 3;
-      switch (incidence_[e] % 3) {
-        case 0: ax -= G00[k] + G01[k]; ay -= G10[k] + G11[k]; break;
-        case 1: ax += G00[k]; ay += G10[k]; break;
-        default: ax += G01[k]; ay += G11[k]; break;
+#pragma omp barrier
+    // dW/dx_v: corner 0 of a triangle receives -(G e_0 + G e_1), corners 1 and 2 the columns of G.
+    double* gx = gradient.col(0).data();
+    double* gy = gradient.col(1).data();
+    const int* at = incidenceStart_.data();
+#pragma omp for schedule(static)
+    for (int v = 0; v < n; ++v) {
+      double ax = 0, ay = 0;
+      for (int e = at[3 * v]; e < at[3 * v + 1]; ++e) {
+        const int k = incidence_[e];
+        ax -= G00[k] + G01[k];
+        ay -= G10[k] + G11[k];
       }
+      for (int e = at[3 * v + 1]; e < at[3 * v + 2]; ++e) {
+        ax += G00[incidence_[e]];
+        ay += G10[incidence_[e]];
+      }
+      for (int e = at[3 * v + 2]; e < at[3 * v + 3]; ++e) {
+        ax += G01[incidence_[e]];
+        ay += G11[incidence_[e]];
+      }
+      gx[v] += ax;
+      gy[v] += ay;
     }
-    gx[v] += ax;
-    gy[v] += ay;
   }
   return energy;
 }

@@ -46,9 +46,9 @@ class DeformationEnergy {
   std::vector<double> rest_;                  // m x 5 x t
   const double* restOf(int key) const { return rest_.data() + static_cast<size_t>(key) * 5 * triangles_.size(); }
   std::array<std::vector<int>, 3> corner_;    // vertex of each corner, per triangle
-  std::vector<int> incidenceStart_;           // CSR over vertices of (triangle, corner)
-  std::vector<int> incidence_;                // 3 * t + corner
-  mutable std::vector<double> blocks_;           // scratch: gradient blocks G00, G10, G01, G11 (4 x t)
+  std::vector<int> incidenceStart_;           // CSR over slots 3 v + c (vertex v as corner c), 3n + 1
+  std::vector<int> incidence_;                // triangles, grouped by slot
+  mutable std::vector<double> scratch_;       // D00 D01 D10 D11 G00 G01 G10 G11, each t long
 };
 
 // Cosine and sine of the rotation closest to F = [f00 f01; f10 f11] in the Frobenius norm (2D
