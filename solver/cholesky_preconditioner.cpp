@@ -39,6 +39,10 @@ void CholeskyPreconditioner::factorize(const Eigen::SparseMatrix<double>& H) {
   rowStart_.assign(rows.outerIndexPtr(), rows.outerIndexPtr() + n_ + 1);
   rowCol_.assign(rows.innerIndexPtr(), rows.innerIndexPtr() + rows.nonZeros());
   rowValue_.assign(rows.valuePtr(), rows.valuePtr() + rows.nonZeros());
+  // Multiplying by 1 / L_jj instead of dividing shortens the dependency chain from one
+  // unknown to the next (the solves are latency-bound: rows are short).
+  inverseDiagonal_.resize(n_);
+  for (int j = 0; j < n_; ++j) inverseDiagonal_[j] = 1.0 / L.valuePtr()[L.outerIndexPtr()[j]];
   if (first) {
     const auto& P = llt.permutationP();
     perm_.assign(P.indices().data(), P.indices().data() + n_);
@@ -135,8 +139,8 @@ void CholeskyPreconditioner::solve(Eigen::MatrixX2d& rhs) const {
     for (int j : columns) {
       const int diag = rowStart_[j + 1] - 1;
       const auto [a, b] = dotPair(&rowCol_[rowStart_[j]], &rowValue_[rowStart_[j]], diag - rowStart_[j], x);
-      x[2 * j] = (x[2 * j] - a) / rowValue_[diag];
-      x[2 * j + 1] = (x[2 * j + 1] - b) / rowValue_[diag];
+      x[2 * j] = (x[2 * j] - a) * inverseDiagonal_[j];
+      x[2 * j + 1] = (x[2 * j + 1] - b) * inverseDiagonal_[j];
     }
   };
   // L^T x = y, by columns in reverse: x_j = (y_j - sum_{i>j} L_ij x_i) / L_jj reads ancestors.
@@ -144,8 +148,8 @@ void CholeskyPreconditioner::solve(Eigen::MatrixX2d& rhs) const {
     for (auto it = columns.rbegin(); it != columns.rend(); ++it) {
       const int j = *it, first = colStart_[j] + 1;
       const auto [a, b] = dotPair(&colRow_[first], &colValue_[first], colStart_[j + 1] - first, x);
-      x[2 * j] = (x[2 * j] - a) / colValue_[colStart_[j]];
-      x[2 * j + 1] = (x[2 * j + 1] - b) / colValue_[colStart_[j]];
+      x[2 * j] = (x[2 * j] - a) * inverseDiagonal_[j];
+      x[2 * j + 1] = (x[2 * j + 1] - b) * inverseDiagonal_[j];
     }
   };
   const int parts = static_cast<int>(part_.size());

@@ -44,6 +44,7 @@ class CholeskyPreconditioner {
   std::vector<float> colValue_;
   std::vector<int> rowStart_, rowCol_;    // L by rows (diagonal last), for L y = b
   std::vector<float> rowValue_;
+  std::vector<double> inverseDiagonal_;   // 1 / L_jj
   std::vector<std::vector<int>> part_;    // independent subtrees, one list per thread
   std::vector<int> top_;                  // separator columns above them, done serially
   mutable std::vector<double> work_;      // 2n interleaved
