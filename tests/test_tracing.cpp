@@ -1,0 +1,105 @@
+#include "atomic_file.h"
+#include "drawings.h"
+#include "error.h"
+#include "png_image.h"
+#include "tracing.h"
+
+#include <catch2/catch.hpp>
+#include <cmath>
+
+using namespace ib;
+
+namespace {
+
+// Largest distance from the loop's vertices to the circle (centre, radius). A traced outline
+// follows the pixel grid's rendering of the shape, so it can be off the true curve by up to
+// about half a pixel plus potrace's smoothing: the tests allow 0.75 px.
+double circleDeviation(const Polyline& loop, Eigen::Vector2d centre, double radius) {
+  double worst = 0;
+  for (const auto& p : loop) worst = std::max(worst, std::abs((p - centre).norm() - radius));
+  return worst;
+}
+
+std::vector<Outline> trace(const RgbaImage& image, TracingOptions options = {}) {
+  return traceOutlines(shapeMask(image, options), options, "drawing.png");
+}
+
+}  // namespace
+
+TEST_CASE("png: an RGBA image survives a write and a read unchanged") {
+  const RgbaImage image = test::drawShape(37, 21, test::disc(18, 10, 8), 200, 100, 50);
+  const std::string path = test::scratchDirectory("png-roundtrip") + "/a.png";
+  writePng(path, image);
+  const RgbaImage back = readPng(path);
+  CHECK(back.width == 37);
+  CHECK(back.height == 21);
+  CHECK(back.hasAlpha);
+  CHECK(back.pixels == image.pixels);
+}
+
+TEST_CASE("png: missing, truncated and corrupt files are input errors naming the file") {
+  const std::string dir = test::scratchDirectory("png-bad");
+  CHECK_THROWS_WITH(readPng(dir + "/none.png"), Catch::Contains("none.png") && Catch::Contains("cannot open"));
+  const std::string good = encodePng(test::drawShape(64, 64, test::disc(32, 32, 20)));
+  writeFileAtomically(dir + "/truncated.png", good.substr(0, good.size() / 2));
+  CHECK_THROWS_AS(readPng(dir + "/truncated.png"), InputError);
+  CHECK_THROWS_WITH(readPng(dir + "/truncated.png"), Catch::Contains("truncated.png"));
+  writeFileAtomically(dir + "/text.png", "this is not a picture");
+  CHECK_THROWS_WITH(readPng(dir + "/text.png"), Catch::Contains("text.png") && Catch::Contains("not a readable PNG"));
+  std::string flipped = good;
+  for (size_t i = 60; i < flipped.size(); i += 7) flipped[i] = static_cast<char>(flipped[i] ^ 0x5a);
+  writeFileAtomically(dir + "/flipped.png", flipped);
+  CHECK_THROWS_AS(readPng(dir + "/flipped.png"), InputError);
+}
+
+TEST_CASE("tracing: a disc traces to one loop on its circle, within 0.75 px, with its area") {
+  const auto outlines = trace(test::drawShape(128, 128, test::disc(64, 60, 40)));
+  REQUIRE(outlines.size() == 1);
+  CHECK(outlines[0].holes.empty());
+  CHECK(loopArea(outlines[0].outer) == Approx(M_PI * 40 * 40).epsilon(0.01));
+  CHECK(circleDeviation(outlines[0].outer, {64, 60}, 40) < 0.75);
+}
+
+TEST_CASE("tracing: a ring has one hole, oriented against its outer loop") {
+  const auto outlines = trace(test::drawShape(128, 128, test::subtract(test::disc(64, 64, 50), test::disc(64, 64, 20))));
+  REQUIRE(outlines.size() == 1);
+  REQUIRE(outlines[0].holes.size() == 1);
+  CHECK(loopArea(outlines[0].outer) == Approx(M_PI * 50 * 50).epsilon(0.01));
+  CHECK(loopArea(outlines[0].holes[0]) == Approx(-M_PI * 20 * 20).epsilon(0.02));
+  CHECK(circleDeviation(outlines[0].holes[0], {64, 64}, 20) < 0.75);
+}
+
+TEST_CASE("tracing: separate pieces and an island in a hole are components; specks are dropped") {
+  const auto ring = test::subtract(test::disc(60, 60, 50), test::disc(60, 60, 30));
+  const auto island = test::disc(60, 60, 12);
+  const auto other = test::box(130, 20, 180, 60);
+  const auto speck = test::box(150, 100, 152, 102);  // 4 px^2 < minArea 16
+  const auto outlines = trace(test::drawShape(200, 128, test::unite(test::unite(ring, island), test::unite(other, speck))));
+  REQUIRE(outlines.size() == 3);  // ring, box, island: largest first
+  CHECK(outlines[0].holes.size() == 1);
+  CHECK(loopArea(outlines[1].outer) == Approx(50 * 40).epsilon(0.01));
+  CHECK(circleDeviation(outlines[2].outer, {60, 60}, 12) < 0.75);
+}
+
+TEST_CASE("tracing: an opaque drawing on paper and a palette PNG trace like the alpha drawing") {
+  const auto shape = test::subtract(test::disc(64, 64, 45), test::box(50, 50, 78, 78));
+  const double area = loopArea(trace(test::drawShape(128, 128, shape))[0].outer);
+  const auto opaque = trace(test::drawOpaque(128, 128, shape));
+  REQUIRE(opaque.size() == 1);
+  CHECK(opaque[0].holes.size() == 1);
+  CHECK(loopArea(opaque[0].outer) == Approx(area).epsilon(0.01));
+  const std::string path = test::scratchDirectory("palette") + "/palette.png";
+  writeFileAtomically(path, test::palettePng(128, 128, shape));
+  const RgbaImage palette = readPng(path);
+  CHECK(palette.hasAlpha);
+  const auto traced = trace(palette);
+  REQUIRE(traced.size() == 1);
+  CHECK(traced[0].holes.size() == 1);
+  CHECK(loopArea(traced[0].outer) == Approx(area).epsilon(0.02));
+}
+
+TEST_CASE("tracing: a drawing with nothing on it is an input error naming it") {
+  const RgbaImage empty = test::drawShape(32, 32, [](double, double) { return false; });
+  CHECK_THROWS_AS(trace(empty), InputError);
+  CHECK_THROWS_WITH(trace(empty), Catch::Contains("drawing.png") && Catch::Contains("empty drawing"));
+}
