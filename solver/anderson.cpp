@@ -73,13 +73,19 @@ void AndersonAcceleration::next(const Eigen::Ref<const Eigen::VectorXd>& gx,
     double gramRow[kMaxDepth] = {}, projected[kMaxDepth] = {};
     for (int j = 0; j < cols; ++j) {
       const float* column = dF_.col(j).data() + first;
-      double gram = 0, projection = 0;
+      double projection = 0;
+      if (append) {
+        double gram = 0;
 #pragma omp simd reduction(+ : gram, projection)
-      for (Eigen::Index r = 0; r < count; ++r) {
-        gram += static_cast<double>(column[r]) * newF[r];
-        projection += static_cast<double>(column[r]) * fb[r];
+        for (Eigen::Index r = 0; r < count; ++r) {
+          gram += static_cast<double>(column[r]) * newF[r];
+          projection += static_cast<double>(column[r]) * fb[r];
+        }
+        gramRow[j] = gram;
+      } else {
+#pragma omp simd reduction(+ : projection)
+        for (Eigen::Index r = 0; r < count; ++r) projection += static_cast<double>(column[r]) * fb[r];
       }
-      gramRow[j] = gram;
       projected[j] = projection;
     }
 #pragma omp simd
@@ -89,7 +95,7 @@ void AndersonAcceleration::next(const Eigen::Ref<const Eigen::VectorXd>& gx,
     }
 #pragma omp critical
     for (int j = 0; j < cols; ++j) {
-      sums[j] += append ? gramRow[j] : 0.0;
+      sums[j] += gramRow[j];
       sums[kMaxDepth + j] += projected[j];
     }
   }

@@ -174,11 +174,13 @@ void checkCorrespondence(const Scene& scene, const Context& at) {
   for (const KeySpec& key : scene.keys)
     for (const auto& [f, p] : key.features) {
       if (cutOfFeature.count(f)) continue;
-      if (f.find('.') != std::string::npos && cuts.count(f.substr(0, f.find('.'))) == 0)
-        throw at.in("key " + inQuotes(key.name)).error("feature " + inQuotes(f) + " names no cut of this scene");
-      if (f.find('.') != std::string::npos)
-        throw at.in("key " + inQuotes(key.name)).error("feature " + inQuotes(f) + " is not one that cut " +
-                                                    inQuotes(f.substr(0, f.find('.'))) + " creates");
+      const size_t dot = f.find('.');
+      if (dot != std::string::npos) {  // reserved for cut features
+        const std::string cut = f.substr(0, dot);
+        throw at.in("key " + inQuotes(key.name))
+            .error("feature " + inQuotes(f) +
+                   (cuts.count(cut) ? " is not one that cut " + inQuotes(cut) + " creates" : " names no cut of this scene"));
+      }
       plain.insert({f, key.name});
     }
   for (const KeySpec& key : scene.keys)
