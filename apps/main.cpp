@@ -1,6 +1,7 @@
 // The `inbetween` command: a thin front end over the solver (and, later, the engine).
 // Exit codes: 0 success, 2 bad input (message names the file, field or option), 1 internal error.
 #include "bench.h"
+#include "mesh_command.h"
 #include "error.h"
 
 #include <cstdio>
@@ -16,6 +17,7 @@ constexpr const char* kUsage =
     "Interpolates key drawings (Zhu, Popovic, Bridson, Kaufman 2017).\n"
     "\n"
     "commands:\n"
+    "  mesh SCENE     build the multimesh of a scene (see `inbetween mesh --help`)\n"
     "  bench interp   benchmark the interpolation solver; one JSON object per case\n"
     "\n"
     "options:\n"
@@ -33,6 +35,7 @@ int run(const std::vector<std::string>& args) {
   }
   const std::vector<std::string> rest(args.begin() + 1, args.end());
   if (command == "bench") return ib::runBench(rest);
+  if (command == "mesh") return ib::runMesh(rest);
   throw ib::InputError("unknown command '" + command + "' (see `inbetween --help`)");
 }
 

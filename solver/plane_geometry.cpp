@@ -1,0 +1,69 @@
+#include "plane_geometry.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ib {
+
+double orient(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c) {
+  return (b.x() - a.x()) * (c.y() - a.y()) - (b.y() - a.y()) * (c.x() - a.x());
+}
+
+double closestParameter(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& p) {
+  const Eigen::Vector2d d = b - a;
+  const double dd = d.squaredNorm();
+  return dd > 0 ? std::clamp((p - a).dot(d) / dd, 0.0, 1.0) : 0.0;
+}
+
+namespace {
+
+bool onSegment(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& p) {
+  return std::min(a.x(), b.x()) <= p.x() && p.x() <= std::max(a.x(), b.x()) && std::min(a.y(), b.y()) <= p.y() &&
+         p.y() <= std::max(a.y(), b.y());
+}
+
+int sign(double v) { return (v > 0) - (v < 0); }
+
+}  // namespace
+
+bool segmentsMeet(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c,
+                  const Eigen::Vector2d& d) {
+  const int o1 = sign(orient(a, b, c)), o2 = sign(orient(a, b, d));
+  const int o3 = sign(orient(c, d, a)), o4 = sign(orient(c, d, b));
+  if (o1 != o2 && o3 != o4) return true;
+  return (o1 == 0 && onSegment(a, b, c)) || (o2 == 0 && onSegment(a, b, d)) || (o3 == 0 && onSegment(c, d, a)) ||
+         (o4 == 0 && onSegment(c, d, b));
+}
+
+int rayCrossings(const Polyline& loop, const Eigen::Vector2d& p) {
+  int crossings = 0;
+  for (size_t i = 0, n = loop.size(); i < n; ++i) {
+    const Eigen::Vector2d& a = loop[i];
+    const Eigen::Vector2d& b = loop[(i + 1) % n];
+    if ((a.y() > p.y()) == (b.y() > p.y())) continue;
+    const double x = a.x() + (p.y() - a.y()) * (b.x() - a.x()) / (b.y() - a.y());
+    if (x > p.x()) ++crossings;
+  }
+  return crossings;
+}
+
+ArcLengthLoop::ArcLengthLoop(Polyline points) : points_(std::move(points)) {
+  cumulative_.assign(points_.size() + 1, 0.0);
+  for (size_t i = 0, n = points_.size(); i < n; ++i)
+    cumulative_[i + 1] = cumulative_[i] + (points_[(i + 1) % n] - points_[i]).norm();
+}
+
+Eigen::Vector2d ArcLengthLoop::at(double s) const {
+  const double total = length();
+  if (points_.empty()) return Eigen::Vector2d::Zero();
+  if (!(total > 0)) return points_[0];
+  s = std::fmod(s, total);
+  if (s < 0) s += total;
+  const size_t i = std::min<size_t>(std::upper_bound(cumulative_.begin(), cumulative_.end(), s) - cumulative_.begin() - 1,
+                                    points_.size() - 1);
+  const double span = cumulative_[i + 1] - cumulative_[i];
+  const double t = span > 0 ? (s - cumulative_[i]) / span : 0.0;
+  return (1 - t) * points_[i] + t * points_[(i + 1) % points_.size()];
+}
+
+}  // namespace ib

@@ -1,0 +1,40 @@
+// Small exact-enough predicates on points, segments and loops in the drawing plane (pixels).
+#pragma once
+
+#include "tracing.h"
+
+#include <Eigen/Core>
+
+namespace ib {
+
+// Twice the signed area of (a, b, c): positive when c lies to the left of a->b (y-up frame).
+double orient(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c);
+
+// Parameter t in [0, 1] of the point of segment [a, b] closest to p.
+double closestParameter(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& p);
+
+// True when closed segments [a, b] and [c, d] share a point (crossing or touching).
+bool segmentsMeet(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c,
+                  const Eigen::Vector2d& d);
+
+// Crossings of a ray from p towards +x with the loop: odd means p is enclosed by the loop.
+int rayCrossings(const Polyline& loop, const Eigen::Vector2d& p);
+
+// Arc-length parametrization of a closed loop: s in [0, length()) walks the loop from point 0.
+class ArcLengthLoop {
+ public:
+  ArcLengthLoop() = default;
+  explicit ArcLengthLoop(Polyline points);
+
+  double length() const { return cumulative_.back(); }
+  const Polyline& points() const { return points_; }
+  double parameterOfPoint(int i) const { return cumulative_[i]; }
+  // The point at arc length s, s taken modulo length().
+  Eigen::Vector2d at(double s) const;
+
+ private:
+  Polyline points_;
+  std::vector<double> cumulative_;  // size points + 1; cumulative_[i] = arc length to point i
+};
+
+}  // namespace ib

@@ -1,0 +1,141 @@
+#include "error.h"
+#include "example_scenes.h"
+#include "drawings.h"
+#include "multimesh_builder.h"
+#include "plane_geometry.h"
+
+#include <catch2/catch.hpp>
+#include <filesystem>
+#include <map>
+
+using namespace ib;
+
+namespace {
+
+// Every good example scene, built once per test run (building takes a moment).
+const std::map<std::string, std::pair<Scene, BuiltScene>>& builtScenes() {
+  static const auto built = [] {
+    const std::string folder = test::scratchDirectory("builder");
+    std::map<std::string, std::pair<Scene, BuiltScene>> out;
+    for (const auto& example : test::goodScenes()) {
+      test::writeScene(example, folder);
+      const Scene scene = loadScene((std::filesystem::path(folder) / example.name / "scene.json").string());
+      out.emplace(example.name, std::make_pair(scene, buildMultimesh(scene, MultimeshBuildOptions{})));
+    }
+    return out;
+  }();
+  return built;
+}
+
+// Distance from p to the nearest segment of the key's loops (outlines and cut sides).
+double distanceToShape(const KeyShape& shape, const Eigen::Vector2d& p) {
+  double best = std::numeric_limits<double>::infinity();
+  for (const ShapeLoop& loop : shape.loops)
+    for (size_t i = 0, n = loop.points.size(); i < n; ++i) {
+      const Eigen::Vector2d& a = loop.points[i];
+      const Eigen::Vector2d& b = loop.points[(i + 1) % n];
+      best = std::min(best, (a + closestParameter(a, b, p) * (b - a) - p).norm());
+    }
+  return best;
+}
+
+std::vector<int> meshBoundary(const Multimesh& mesh) {
+  std::vector<int> out;
+  for (auto v : mesh.topology().vertices())
+    if (mesh.topology().is_boundary(v)) out.push_back(v.idx());
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("multimesh builder: every example scene builds with positive triangle areas in every key") {
+  for (const auto& [name, entry] : builtScenes()) {
+    INFO("scene " << name);
+    const Multimesh& mesh = *entry.second.multimesh;
+    REQUIRE(mesh.keyCount() == static_cast<int>(entry.first.keys.size()));
+    CHECK(mesh.triangleCount() > 100);
+    for (int k = 0; k < mesh.keyCount(); ++k) {
+      const Eigen::MatrixX2d x = mesh.keyPositions(k);
+      for (const Triangle& t : mesh.triangles())
+        REQUIRE(signedArea(x.row(t[0]), x.row(t[1]), x.row(t[2])) > 1e-9);
+    }
+    CHECK_NOTHROW(mesh.validate());
+  }
+}
+
+TEST_CASE("multimesh builder: cohesive pairs are collocated exactly in the keys that close a cut") {
+  const std::map<std::string, int> expectedPairs = {{"square-arch-notch", 1}, {"disc-ring", 1}, {"cell-split", 1}};
+  for (const auto& [name, entry] : builtScenes()) {
+    INFO("scene " << name);
+    const Multimesh& mesh = *entry.second.multimesh;
+    for (int k = 0; k < mesh.keyCount(); ++k) {
+      const bool closes = !entry.first.keys[k].cuts.empty();
+      const auto& pairs = mesh.cohesivePairs(k);
+      CHECK((pairs.empty()) == !closes);
+      const Eigen::MatrixX2d x = mesh.keyPositions(k);
+      for (const CohesivePair& p : pairs) {
+        REQUIRE(x.row(p.a) == x.row(p.c));
+        REQUIRE(x.row(p.b) == x.row(p.d));
+        REQUIRE(p.a != p.c);  // the two sides are different vertices
+      }
+    }
+  }
+}
+
+TEST_CASE("multimesh builder: boundary vertices lie on their key's outline within 0.5 px") {
+  for (const auto& [name, entry] : builtScenes()) {
+    INFO("scene " << name);
+    const Multimesh& mesh = *entry.second.multimesh;
+    const std::vector<int> boundary = meshBoundary(mesh);
+    for (int k = 0; k < mesh.keyCount(); ++k) {
+      INFO("key " << entry.first.keys[k].name);
+      const Eigen::MatrixX2d x = mesh.keyPositions(k);
+      double worst = 0;
+      for (int v : boundary) worst = std::max(worst, distanceToShape(entry.second.shapes[k], x.row(v)));
+      CHECK(worst <= 0.5);
+    }
+  }
+}
+
+TEST_CASE("multimesh builder: features sit where they were placed, snapped to the outline") {
+  for (const auto& [name, entry] : builtScenes()) {
+    INFO("scene " << name);
+    const Multimesh& mesh = *entry.second.multimesh;
+    for (int k = 0; k < mesh.keyCount(); ++k) {
+      const Eigen::MatrixX2d x = mesh.keyPositions(k);
+      for (const auto& [feature, placed] : entry.first.keys[k].features) {
+        INFO("key " << entry.first.keys[k].name << ", feature " << feature);
+        double nearest = std::numeric_limits<double>::infinity();
+        for (int v = 0; v < mesh.vertexCount(); ++v) nearest = std::min(nearest, (x.row(v).transpose() - placed).norm());
+        CHECK(nearest <= 2.0);  // the drawings' edges are within a pixel of where the scene places them
+      }
+    }
+  }
+}
+
+TEST_CASE("multimesh builder: the slit opens a hole and the split makes two components") {
+  const Multimesh& ring = *builtScenes().at("disc-ring").second.multimesh;
+  int holes = 0;
+  const auto& topo = ring.topology();
+  std::vector<char> seen(topo.n_halfedges(), 0);
+  for (auto h : topo.halfedges())
+    if (topo.is_boundary(h) && !seen[h.idx()]) {
+      ++holes;
+      for (auto g = h; !seen[g.idx()]; g = topo.next_halfedge_handle(g)) seen[g.idx()] = 1;
+    }
+  CHECK(holes == 2);  // outer outline and the slit's loop
+  const BuiltScene& cells = builtScenes().at("cell-split").second;
+  CHECK(cells.shapes[0].loops.size() == 2);
+  CHECK(cells.shapes[1].loops.size() == 2);
+}
+
+TEST_CASE("multimesh builder: nested featureless loops are matched by position and size") {
+  const BuiltScene& rings = builtScenes().at("nested-rings").second;
+  const Multimesh& mesh = *rings.multimesh;
+  // If loops were matched wrongly the squashed key would fold; positive areas are checked above.
+  // Here: the outer outline of the round key maps to the largest loop of the squashed key.
+  const Eigen::MatrixX2d round = mesh.keyPositions(0), squashed = mesh.keyPositions(1);
+  int far = 0;
+  for (int v = 0; v < mesh.vertexCount(); ++v) far = (round.row(v) - Eigen::RowVector2d(64, 64)).norm() > (round.row(far) - Eigen::RowVector2d(64, 64)).norm() ? v : far;
+  CHECK((squashed.row(far) - Eigen::RowVector2d(62, 66)).norm() > 45);
+}
