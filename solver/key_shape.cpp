@@ -160,7 +160,8 @@ class CutApplier {
           if (k + 2 == pts.size() && incident(end, l, i, n)) continue;
           if (segmentsMeet(pts[k], pts[k + 1], loop[i], loop[(i + 1) % n]))
             throw error("leaves the shape: its segment from point " + std::to_string(k + 1) + " to point " +
-                        std::to_string(k + 2) + " crosses the outline near " + pixels(loop[i]));
+                        std::to_string(k + 2) + " crosses the outline at " +
+                        pixels(meetingPoint(pts[k], pts[k + 1], loop[i], loop[(i + 1) % n])));
         }
       }
     const Eigen::Vector2d probe = 0.5 * (pts[0] + pts[1]);

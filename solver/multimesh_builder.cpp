@@ -151,8 +151,13 @@ BuiltScene buildMultimesh(const Scene& scene, const MultimeshBuildOptions& optio
   const int m = static_cast<int>(scene.keys.size());
   for (int k = 0; k < m; ++k) {
     if (options.progress) options.progress("tracing " + scene.keys[k].name, static_cast<double>(k) / m);
-    const RgbaImage image = readPng(scene.keys[k].drawing);
-    built.outlines.push_back(traceOutlines(shapeMask(image, scene.tracing), scene.tracing, scene.keys[k].drawing));
+    try {
+      const RgbaImage image = readPng(scene.keys[k].drawing);
+      built.outlines.push_back(traceOutlines(shapeMask(image, scene.tracing), scene.tracing, scene.keys[k].drawing));
+    } catch (const InputError& e) {
+      throw InputError(std::filesystem::path(scene.file).filename().string() + ": key " + inQuotes(scene.keys[k].name) +
+                       ": drawing " + e.what());
+    }
     built.shapes.push_back(buildKeyShape(scene, k, built.outlines.back(), options.shape));
   }
   const std::string file = std::filesystem::path(scene.file).filename().string();

@@ -35,6 +35,17 @@ bool segmentsMeet(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eige
          (o4 == 0 && onSegment(c, d, b));
 }
 
+Eigen::Vector2d meetingPoint(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c,
+                             const Eigen::Vector2d& d) {
+  const Eigen::Vector2d r = b - a, s = d - c;
+  const double denominator = r.x() * s.y() - r.y() * s.x();
+  if (std::abs(denominator) > 1e-12 * r.norm() * s.norm()) {
+    const double t = ((c - a).x() * s.y() - (c - a).y() * s.x()) / denominator;
+    return a + std::clamp(t, 0.0, 1.0) * r;
+  }
+  return 0.5 * (a + closestParameter(a, b, c) * r + a + closestParameter(a, b, d) * r);
+}
+
 int rayCrossings(const Polyline& loop, const Eigen::Vector2d& p) {
   int crossings = 0;
   for (size_t i = 0, n = loop.size(); i < n; ++i) {

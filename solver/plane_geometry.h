@@ -17,6 +17,10 @@ double closestParameter(const Eigen::Vector2d& a, const Eigen::Vector2d& b, cons
 bool segmentsMeet(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c,
                   const Eigen::Vector2d& d);
 
+// A point where segments [a, b] and [c, d] meet (the midpoint of the overlap when collinear).
+Eigen::Vector2d meetingPoint(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c,
+                             const Eigen::Vector2d& d);
+
 // Crossings of a ray from p towards +x with the loop: odd means p is enclosed by the loop.
 int rayCrossings(const Polyline& loop, const Eigen::Vector2d& p);
 

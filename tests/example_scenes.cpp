@@ -79,8 +79,8 @@ ExampleScene cellSplit() {
     {"name": "one", "drawing": "one.png",
      "cuts": [{"name": "division", "kind": "split", "points": [[64, 38], [64, 90]]}]},
     {"name": "two", "drawing": "two.png",
-     "features": {"division.start.left": [71, 47], "division.end.left": [71, 81],
-                  "division.start.right": [57, 47], "division.end.right": [57, 81]}}
+     "features": {"division.start.left": [72.4, 48.4], "division.end.left": [72.4, 79.6],
+                  "division.start.right": [55.6, 48.4], "division.end.right": [55.6, 79.6]}}
   ]
 })",
           {{"one.png", drawShape(kSize, kSize, ellipse(64, 64, 50, 26))},

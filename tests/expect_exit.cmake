@@ -1,5 +1,6 @@
 # Runs COMMAND with ARGS (words joined by "|") and fails unless it exits with EXPECTED. For exit code 2 the
-# message must start with "inbetween:"; for a bench run stdout must hold a "bench" JSON object.
+# message must start with "inbetween:" (and contain MESSAGE when given); for a bench run stdout must hold a
+# "bench" JSON object.
 string(REPLACE "|" ";" args "${ARGS}")
 execute_process(COMMAND ${COMMAND} ${args} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(NOT code EQUAL EXPECTED)
@@ -7,6 +8,9 @@ if(NOT code EQUAL EXPECTED)
 endif()
 if(EXPECTED EQUAL 2 AND NOT err MATCHES "^(inbetween: |usage: )")
   message(FATAL_ERROR "bad-input message missing or malformed: '${err}'")
+endif()
+if(DEFINED MESSAGE AND NOT err MATCHES "${MESSAGE}")
+  message(FATAL_ERROR "message does not mention '${MESSAGE}': '${err}'")
 endif()
 if(EXPECTED EQUAL 0 AND "${ARGS}" MATCHES "^bench[|]interp")
   string(JSON kind ERROR_VARIABLE json_error GET "${out}" bench)

@@ -76,7 +76,7 @@ TEST_CASE("multimesh builder: cohesive pairs are collocated exactly in the keys 
       for (const CohesivePair& p : pairs) {
         REQUIRE(x.row(p.a) == x.row(p.c));
         REQUIRE(x.row(p.b) == x.row(p.d));
-        REQUIRE(p.a != p.c);  // the two sides are different vertices
+        REQUIRE(!(p.a == p.c && p.b == p.d));  // two sides, not one edge twice (they may share a tip)
       }
     }
   }
@@ -102,12 +102,18 @@ TEST_CASE("multimesh builder: features sit where they were placed, snapped to th
     INFO("scene " << name);
     const Multimesh& mesh = *entry.second.multimesh;
     for (int k = 0; k < mesh.keyCount(); ++k) {
+      KeyShape traced;  // the drawing's outlines, before cuts
+      for (const Outline& o : entry.second.outlines[k]) {
+        traced.loops.push_back({o.outer, {}});
+        for (const Polyline& h : o.holes) traced.loops.push_back({h, {}});
+      }
       const Eigen::MatrixX2d x = mesh.keyPositions(k);
       for (const auto& [feature, placed] : entry.first.keys[k].features) {
         INFO("key " << entry.first.keys[k].name << ", feature " << feature);
         double nearest = std::numeric_limits<double>::infinity();
         for (int v = 0; v < mesh.vertexCount(); ++v) nearest = std::min(nearest, (x.row(v).transpose() - placed).norm());
-        CHECK(nearest <= 2.0);  // the drawings' edges are within a pixel of where the scene places them
+        CHECK(nearest <= distanceToShape(traced, placed) + 1e-6);  // a vertex at the nearest outline point
+        CHECK(nearest <= 1.0);  // and the scenes place their features on the drawn edge
       }
     }
   }

@@ -1,0 +1,149 @@
+#include "error.h"
+#include "key_shape.h"
+#include "shared_boundary.h"
+#include "untangle.h"
+
+#include <catch2/catch.hpp>
+
+using namespace ib;
+
+namespace {
+
+// The square [0, 100]^2 as traced: interior on the left in a y-up frame (positive loopArea).
+Outline squareOutline(double x0 = 0, double size = 100) {
+  Outline o;
+  o.outer = {{x0, 0}, {x0 + size, 0}, {x0 + size, size}, {x0, size}};
+  REQUIRE(loopArea(o.outer) > 0);
+  return o;
+}
+
+Scene sceneWith(const std::vector<KeySpec>& keys) {
+  Scene s;
+  s.file = "dir/test.json";
+  s.keys = keys;
+  return s;
+}
+
+KeySpec keyWithCut(const std::string& name, CutKind kind, Polyline points) {
+  KeySpec k;
+  k.name = name;
+  k.cuts.push_back({"c", kind, std::move(points)});
+  return k;
+}
+
+std::vector<std::string> featureOrder(const ShapeLoop& loop) {
+  std::vector<std::string> out;
+  for (const auto& f : loop.features)
+    if (!f.empty()) out.push_back(f);
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("key shape: a notch walks in along its right side and out along its left, as seen walking in") {
+  // Up the screen from the bottom edge (y = 100) to (50, 40): screen-left is smaller x.
+  const Scene scene = sceneWith({keyWithCut("k", CutKind::kNotch, {{50, 100}, {50, 70}, {50, 40}})});
+  const KeyShape shape = buildKeyShape(scene, 0, {squareOutline()}, KeyShapeOptions{});
+  REQUIRE(shape.loops.size() == 1);
+  const ShapeLoop& loop = shape.loops[0];
+  const auto [l, right] = findFeature(shape, "c.right");
+  const auto [l2, tip] = findFeature(shape, "c.tip");
+  const auto [l3, left] = findFeature(shape, "c.left");
+  CHECK(tip == right + 2);  // right mouth, the middle cut point, the tip
+  CHECK(left == tip + 2);
+  CHECK(loop.points[right] == loop.points[left]);             // both mouths at the snapped start
+  CHECK(loop.points[right + 1] == loop.points[left - 1]);     // sides are exact copies
+  CHECK(loop.points[tip] == Eigen::Vector2d(50, 40));
+  // The point before the right mouth lies on the screen-right (x > 50), the one after the left mouth on x < 50.
+  const size_t n = loop.points.size();
+  CHECK(loop.points[(right + n - 1) % n].x() > 50);
+  CHECK(loop.points[(left + 1) % n].x() < 50);
+  CHECK(std::abs(loopArea(loop.points) - 100 * 100) < 1e-9);  // a zero-width notch removes no area
+}
+
+TEST_CASE("key shape: a split across the shape separates one loop into two, a slit adds a loop") {
+  const Scene split = sceneWith({keyWithCut("k", CutKind::kSplit, {{50, 0}, {50, 100}})});
+  const KeyShape halves = buildKeyShape(split, 0, {squareOutline()}, KeyShapeOptions{});
+  REQUIRE(halves.loops.size() == 2);
+  CHECK(featureOrder(halves.loops[0]) == std::vector<std::string>{"c.start.right", "c.end.right"});
+  CHECK(featureOrder(halves.loops[1]) == std::vector<std::string>{"c.end.left", "c.start.left"});
+  CHECK(std::abs(loopArea(halves.loops[0].points) + loopArea(halves.loops[1].points) - 1e4) < 1e-9);
+  // Walking down the screen from (50, 0), screen-right is smaller x.
+  CHECK(loopArea(halves.loops[0].points) > 0);
+  for (const auto& p : halves.loops[0].points) CHECK(p.x() <= 50);
+
+  const Scene slit = sceneWith({keyWithCut("k", CutKind::kSlit, {{30, 50}, {70, 50}})});
+  const KeyShape holed = buildKeyShape(slit, 0, {squareOutline()}, KeyShapeOptions{});
+  REQUIRE(holed.loops.size() == 2);
+  CHECK(featureOrder(holed.loops[1]) == std::vector<std::string>{"c.start", "c.end"});
+}
+
+TEST_CASE("key shape: a split from the outline to a hole joins the two loops into one") {
+  Outline holed = squareOutline();
+  holed.holes.push_back({{40, 40}, {40, 60}, {60, 60}, {60, 40}});
+  REQUIRE(loopArea(holed.holes[0]) < 0);
+  const Scene join = sceneWith({keyWithCut("k", CutKind::kSplit, {{50, 100}, {50, 60}})});
+  const KeyShape joined = buildKeyShape(join, 0, {holed}, KeyShapeOptions{});
+  REQUIRE(joined.loops.size() == 1);
+  CHECK(featureOrder(joined.loops[0]).size() == 4);
+  CHECK(std::abs(loopArea(joined.loops[0].points) - (1e4 - 400)) < 1e-9);
+}
+
+TEST_CASE("key shape: features and cut ends off the outline, and cuts leaving the shape, are named errors") {
+  KeySpec far;
+  far.name = "k";
+  far.features["nose"] = {50, 30};
+  CHECK_THROWS_WITH(buildKeyShape(sceneWith({far}), 0, {squareOutline()}, KeyShapeOptions{}),
+                    Catch::Contains("test.json: key \"k\": feature \"nose\"") && Catch::Contains("30 px from the outline"));
+  const Scene inside = sceneWith({keyWithCut("k", CutKind::kNotch, {{50, 50}, {50, 40}})});
+  CHECK_THROWS_WITH(buildKeyShape(inside, 0, {squareOutline()}, KeyShapeOptions{}),
+                    Catch::Contains("cut \"c\": its first point") && Catch::Contains("must lie on the outline"));
+  const Scene leaving = sceneWith({keyWithCut("k", CutKind::kSlit, {{50, 50}, {150, 50}})});
+  CHECK_THROWS_WITH(buildKeyShape(leaving, 0, {squareOutline()}, KeyShapeOptions{}),
+                    Catch::Contains("leaves the shape") && Catch::Contains("(100.0, 50.0)"));
+}
+
+TEST_CASE("shared boundary: a featureless loop traced from another start point is started where it fits") {
+  // The same square in both keys, the second traced from a different corner.
+  Scene scene = sceneWith({KeySpec{"a", "", {}, {}}, KeySpec{"b", "", {}, {}}});
+  KeyShape a{"a", {{squareOutline().outer, std::vector<std::string>(4)}}};
+  Polyline shifted = {{100, 100}, {0, 100}, {0, 0}, {100, 0}};
+  KeyShape b{"b", {{shifted, std::vector<std::string>(4)}}};
+  const SharedBoundary boundary = matchBoundaries(scene, {a, b}, SharedBoundaryOptions{});
+  for (double u : {0.0, 0.1, 0.37, 0.8}) CHECK((boundary.at(0, 0, u) - boundary.at(1, 0, u)).norm() < 1.0);
+}
+
+TEST_CASE("shared boundary: a feature on another loop is reported with the key and both loops' features") {
+  Scene scene = sceneWith({KeySpec{"a", "", {}, {}}, KeySpec{"b", "", {}, {}}});
+  ShapeLoop one{squareOutline().outer, {"p", "q", "", ""}};
+  ShapeLoop first{squareOutline().outer, {"p", "", "", ""}}, second{squareOutline(150).outer, {"q", "", "", ""}};
+  CHECK_THROWS_WITH(matchBoundaries(scene, {KeyShape{"a", {one}}, KeyShape{"b", {first, second}}}, SharedBoundaryOptions{}),
+                    Catch::Contains("loops do not match") && Catch::Contains("key \"b\" feature \"q\" lies on another loop"));
+}
+
+TEST_CASE("untangle: a grid with folded interior vertices and a fixed boundary ends with every triangle positive") {
+  const int n = 8;  // (n+1)^2 vertices on [0, n]^2
+  Eigen::MatrixX2d rest((n + 1) * (n + 1), 2);
+  std::vector<Triangle> triangles;
+  std::vector<char> locked(rest.rows());
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      rest.row(j * (n + 1) + i) << i, j;
+      locked[j * (n + 1) + i] = i == 0 || j == 0 || i == n || j == n;
+    }
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const int v = j * (n + 1) + i;
+      triangles.push_back({v, v + 1, v + n + 2});
+      triangles.push_back({v, v + n + 2, v + n + 1});
+    }
+  Eigen::MatrixX2d x = rest;
+  for (int v = 0; v < x.rows(); ++v)
+    if (!locked[v]) x.row(v) = Eigen::RowVector2d(n - rest(v, 1), rest(v, 0)) * 0.3 + Eigen::RowVector2d(7.5, 0.5);
+  REQUIRE(smallestTriangleArea(triangles, x).first < 0);
+  const UntangleResult r = untangle(triangles, rest, x, locked, UntangleOptions{});
+  CHECK(r.injective);
+  CHECK(smallestTriangleArea(triangles, x).first > 0);
+  for (int v = 0; v < x.rows(); ++v)
+    if (locked[v]) CHECK(x.row(v) == rest.row(v));
+}
