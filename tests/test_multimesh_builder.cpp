@@ -145,3 +145,17 @@ TEST_CASE("multimesh builder: nested featureless loops are matched by position a
   for (int v = 0; v < mesh.vertexCount(); ++v) far = (round.row(v) - Eigen::RowVector2d(64, 64)).norm() > (round.row(far) - Eigen::RowVector2d(64, 64)).norm() ? v : far;
   CHECK((squashed.row(far) - Eigen::RowVector2d(62, 66)).norm() > 45);
 }
+
+TEST_CASE("multimesh builder: every bundled asset scene builds and maps without foldovers") {
+  int scenes = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(INBETWEEN_ASSETS)) {
+    const auto file = entry.path() / "scene.json";
+    if (!std::filesystem::exists(file)) continue;
+    INFO("asset " << file);
+    ++scenes;
+    const Scene scene = loadScene(file.string());
+    const BuiltScene built = buildMultimesh(scene, MultimeshBuildOptions{});
+    for (const KeyReport& key : built.report) CHECK(key.smallestArea > 0);
+  }
+  CHECK(scenes >= 5);
+}
