@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <unistd.h>
 #include <stdexcept>
 
 namespace test {
@@ -86,7 +87,8 @@ std::string palettePng(int width, int height, const Inside& inside) {
 }
 
 std::string scratchDirectory(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() / ("inbetween-test-" + name);
+  // Per process: ctest runs test cases side by side, each in its own process.
+  const auto dir = std::filesystem::temp_directory_path() / ("inbetween-test-" + name + "-" + std::to_string(getpid()));
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir.string();

@@ -25,7 +25,7 @@ Inside subtract(Inside a, Inside b);
 // A palette PNG (colour type 3 with a tRNS chunk) of the shape: index 0 transparent, 1 ink.
 std::string palettePng(int width, int height, const Inside& inside);
 
-// A fresh scratch directory under the system temp folder, removed by the caller if wanted.
+// A fresh scratch directory under the system temp folder, unique to this process.
 std::string scratchDirectory(const std::string& name);
 
 }  // namespace test
