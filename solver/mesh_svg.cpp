@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <sstream>
+#include <vector>
 
 namespace ib {
 
@@ -57,12 +58,20 @@ std::string meshSvg(const Multimesh& mesh, int key, const KeyShape& shape, const
     svg << 'M' << x(p.a, 0) << ',' << x(p.a, 1) << 'L' << x(p.b, 0) << ',' << x(p.b, 1);
   svg << "\"/>\n";
   const double radius = 6 * stroke, font = 40 * stroke;
+  // Labels point away from the middle of the mesh, so features on opposite sides do not collide.
+  const double middle = 0.5 * (x.col(0).minCoeff() + x.col(0).maxCoeff());
+  std::vector<Eigen::Vector2d> labelled;  // features already drawn: collocated ones stack their labels
   for (const ShapeLoop& loop : shape.loops)
     for (size_t i = 0; i < loop.points.size(); ++i) {
       if (loop.features[i].empty()) continue;
       const Eigen::Vector2d& p = loop.points[i];
+      int below = 0;
+      for (const Eigen::Vector2d& q : labelled) below += (q - p).norm() < radius;
+      labelled.push_back(p);
       svg << "<circle cx=\"" << p.x() << "\" cy=\"" << p.y() << "\" r=\"" << radius << "\" fill=\"#f0a000\"/>"
-          << "<text x=\"" << p.x() + 1.5 * radius << "\" y=\"" << p.y() - 1.5 * radius << "\" font-size=\"" << font
+          << "<text text-anchor=\"" << (p.x() < middle ? "end" : "start") << "\" x=\""
+          << p.x() + (p.x() < middle ? -1.5 : 1.5) * radius << "\" y=\"" << p.y() - 1.5 * radius + 1.1 * font * below
+          << "\" font-size=\"" << font
           << "\" font-family=\"sans-serif\" fill=\"#804000\">" << escaped(loop.features[i]) << "</text>\n";
     }
   svg << "</svg>\n";
