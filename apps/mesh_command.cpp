@@ -6,7 +6,6 @@
 #include "mesh_svg.h"
 #include "multimesh_builder.h"
 #include "multimesh_io.h"
-#include "png_image.h"
 #include "progress.h"
 
 #include <cstdio>
@@ -66,9 +65,9 @@ int runMesh(const std::vector<std::string>& rawArgs) {
                        {"smallest_area", built.report[k].smallestArea}};
     if (!options.flag("no-pictures")) {
       const fs::path picture = output.parent_path() / (output.stem().string() + "." + built.report[k].key + ".svg");
-      const RgbaImage image = readPng(scene.keys[k].drawing);
+      const auto [width, height] = built.drawingSizes[k];
       writeFileAtomically(picture.string(), meshSvg(*built.multimesh, static_cast<int>(k), built.shapes[k],
-                                                    readFile(scene.keys[k].drawing), image.width, image.height));
+                                                    readFile(scene.keys[k].drawing), width, height));
       key["picture"] = picture.string();
     }
     summary["keys"].push_back(key);

@@ -13,4 +13,7 @@ class InputError : public std::runtime_error {
   explicit InputError(const std::string& message) : std::runtime_error(message) {}
 };
 
+// For messages: a name in double quotes, as in `key "arch"`.
+inline std::string inQuotes(const std::string& name) { return "\"" + name + "\""; }
+
 }  // namespace ib

@@ -13,15 +13,6 @@ namespace ib {
 
 namespace {
 
-std::string inQuotes(const std::string& s) { return "\"" + s + "\""; }
-
-std::string pixels(const Eigen::Vector2d& p) {
-  std::ostringstream out;
-  out.precision(1);
-  out << std::fixed << "(" << p.x() << ", " << p.y() << ")";
-  return out.str();
-}
-
 struct Snap {
   int loop = -1, point = -1;
   double distance = std::numeric_limits<double>::infinity();
@@ -128,7 +119,7 @@ class CutApplier {
     if (s.distance > snapDistance_) {
       std::ostringstream msg;
       msg.precision(3);
-      msg << "its " << which << " point " << pixels(p) << " must lie on the outline, but is " << s.distance
+      msg << "its " << which << " point " << formatPoint(p) << " must lie on the outline, but is " << s.distance
           << " px from it (at most " << snapDistance_ << " px)";
       throw error(msg.str());
     }
@@ -161,14 +152,14 @@ class CutApplier {
           if (segmentsMeet(pts[k], pts[k + 1], loop[i], loop[(i + 1) % n]))
             throw error("leaves the shape: its segment from point " + std::to_string(k + 1) + " to point " +
                         std::to_string(k + 2) + " crosses the outline at " +
-                        pixels(meetingPoint(pts[k], pts[k + 1], loop[i], loop[(i + 1) % n])));
+                        formatPoint(meetingPoint(pts[k], pts[k + 1], loop[i], loop[(i + 1) % n])));
         }
       }
     const Eigen::Vector2d probe = 0.5 * (pts[0] + pts[1]);
     int crossings = 0;
     for (const ShapeLoop& loop : loops_) crossings += rayCrossings(loop.points, probe);
     if (crossings % 2 == 0)
-      throw error("leaves the shape: it runs outside the drawing from point 1 " + pixels(pts[0]));
+      throw error("leaves the shape: it runs outside the drawing from point 1 " + formatPoint(pts[0]));
   }
 
   void notch(const Polyline& pts, const Snap& mouth, const std::vector<std::string>& names) {
@@ -262,14 +253,14 @@ KeyShape buildKeyShape(const Scene& scene, int key, const std::vector<Outline>& 
     if (s.distance > options.snapDistance) {
       std::ostringstream msg;
       msg.precision(3);
-      msg << where << ": feature " << inQuotes(name) << " at " << pixels(p) << " is " << s.distance
+      msg << where << ": feature " << inQuotes(name) << " at " << formatPoint(p) << " is " << s.distance
           << " px from the outline (at most " << options.snapDistance << " px)";
       throw InputError(msg.str());
     }
     std::string& there = shape.loops[s.loop].features[s.point];
     if (!there.empty())
       throw InputError(where + ": features " + inQuotes(there) + " and " + inQuotes(name) + " land on the same outline point " +
-                       pixels(shape.loops[s.loop].points[s.point]));
+                       formatPoint(shape.loops[s.loop].points[s.point]));
     there = name;
   }
   for (const CutSpec& cut : spec.cuts)

@@ -1,6 +1,7 @@
 #include "multimesh_builder.h"
 
 #include "error.h"
+#include "plane_geometry.h"
 #include "png_image.h"
 #include "shared_boundary.h"
 
@@ -12,8 +13,6 @@
 namespace ib {
 
 namespace {
-
-std::string inQuotes(const std::string& s) { return "\"" + s + "\""; }
 
 bool closedIn(const BoundaryArc& arc, int key) {
   return std::find(arc.closedIn.begin(), arc.closedIn.end(), key) != arc.closedIn.end();
@@ -94,13 +93,6 @@ void tutteInterior(const ReferenceMesh& mesh, Eigen::MatrixX2d& x) {
     if (unknown[v] >= 0) x.row(v) = interior.row(unknown[v]);
 }
 
-std::string pixels(const Eigen::Vector2d& p) {
-  std::ostringstream out;
-  out.precision(1);
-  out << std::fixed << "(" << p.x() << ", " << p.y() << ")";
-  return out.str();
-}
-
 struct Attempt {
   std::optional<Multimesh> multimesh;
   std::vector<KeyReport> report;
@@ -153,6 +145,7 @@ BuiltScene buildMultimesh(const Scene& scene, const MultimeshBuildOptions& optio
     if (options.progress) options.progress("tracing " + scene.keys[k].name, static_cast<double>(k) / m);
     try {
       const RgbaImage image = readPng(scene.keys[k].drawing);
+      built.drawingSizes.push_back({image.width, image.height});
       built.outlines.push_back(traceOutlines(shapeMask(image, scene.tracing), scene.tracing, scene.keys[k].drawing));
     } catch (const InputError& e) {
       throw InputError(std::filesystem::path(scene.file).filename().string() + ": key " + inQuotes(scene.keys[k].name) +
@@ -186,7 +179,7 @@ BuiltScene buildMultimesh(const Scene& scene, const MultimeshBuildOptions& optio
     }
     if (attempt >= options.refinements)
       throw InputError(file + ": key " + inQuotes(scene.keys[result.failedKey].name) +
-                       ": cannot map the mesh onto this key without folding triangles near " + pixels(result.failedAt) +
+                       ": cannot map the mesh onto this key without folding triangles near " + formatPoint(result.failedAt) +
                        " (tried edge lengths down to " + std::to_string(edgeLength) +
                        " px); check that its features and cuts match the other keys there");
     edgeLength /= 1.5;

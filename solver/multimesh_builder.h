@@ -9,6 +9,7 @@
 #include "scene.h"
 #include "untangle.h"
 
+#include <array>
 #include <functional>
 #include <optional>
 #include <string>
@@ -34,6 +35,7 @@ struct KeyReport {
 };
 
 struct BuiltScene {
+  std::vector<std::array<int, 2>> drawingSizes;  // [key]: width, height of the drawing in pixels
   std::vector<std::vector<Outline>> outlines;  // [key]: traced drawing
   std::vector<KeyShape> shapes;                // [key]: after features and cuts
   std::optional<Multimesh> multimesh;          // keys in scene order, positions in drawing pixels

@@ -2,8 +2,16 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 namespace ib {
+
+std::string formatPoint(const Eigen::Vector2d& p) {
+  std::ostringstream out;
+  out.precision(1);
+  out << std::fixed << "(" << p.x() << ", " << p.y() << ")";
+  return out.str();
+}
 
 double orient(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c) {
   return (b.x() - a.x()) * (c.y() - a.y()) - (b.y() - a.y()) * (c.x() - a.x());

@@ -4,8 +4,12 @@
 #include "tracing.h"
 
 #include <Eigen/Core>
+#include <string>
 
 namespace ib {
+
+// "(x, y)" with one decimal, for messages about places in a drawing.
+std::string formatPoint(const Eigen::Vector2d& p);
 
 // Twice the signed area of (a, b, c): positive when c lies to the left of a->b (y-up frame).
 double orient(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c);

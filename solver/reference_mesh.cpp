@@ -1,6 +1,7 @@
 #include "reference_mesh.h"
 
 #include "error.h"
+#include "plane_geometry.h"
 
 #include <algorithm>
 #include <map>
@@ -14,13 +15,6 @@ namespace {
 
 using Edge = std::pair<int, int>;
 Edge undirected(int a, int b) { return {std::min(a, b), std::max(a, b)}; }
-
-std::string at(const Eigen::Vector2d& p) {
-  std::ostringstream out;
-  out.precision(1);
-  out << std::fixed << "(" << p.x() << ", " << p.y() << ")";
-  return out.str();
-}
 
 // The resampled boundary: one point per arc segment start, in loop order.
 struct Resampled {
@@ -75,12 +69,12 @@ class Builder {
     for (const auto& loop : r.loops)
       for (size_t i = 0; i < loop.size(); ++i) {
         const int a = location[loop[i]], b = location[loop[(i + 1) % loop.size()]];
-        if (a == b) throw InputError("the outline doubles back on itself at " + at(locations[a]));
+        if (a == b) throw InputError("the outline doubles back on itself at " + formatPoint(locations[a]));
         ++uses[undirected(a, b)];
       }
     std::vector<std::array<int, 2>> outline, cuts;
     for (const auto& [e, n] : uses) {
-      if (n > 2) throw InputError("three boundary pieces share the edge at " + at(locations[e.first]));
+      if (n > 2) throw InputError("three boundary pieces share the edge at " + formatPoint(locations[e.first]));
       (n == 1 ? outline : cuts).push_back({e.first, e.second});
     }
     ConformingMesh cm = conformingMesh(locations, outline, cuts, options);
@@ -150,7 +144,7 @@ class Builder {
       for (int i = 0; i < 3; ++i) directed.insert({t[i], t[(i + 1) % 3]});
     for (const auto& [a, b] : directed)
       if (!directed.count({b, a}) && !next.insert({a, b}).second)
-        throw InputError("the shape pinches to a point at " + at(mesh_.points[a]) + "; thicken it there");
+        throw InputError("the shape pinches to a point at " + formatPoint(mesh_.points[a]) + "; thicken it there");
     std::map<int, int> sharing;
     for (int loc : location) ++sharing[loc];
     std::map<int, int> vertexOfLocation;
@@ -169,7 +163,7 @@ class Builder {
         while (v >= 0 && origin_[v] >= static_cast<int>(sharing.size()) && added.size() < mesh_.points.size())
           added.push_back(v), v = next.count(v) ? next.at(v) : -1;
         if (v < 0 || origin_[v] != location[there])
-          throw std::logic_error("reference mesh: boundary walk lost the outline near " + at(r.positions[here]));
+          throw std::logic_error("reference mesh: boundary walk lost the outline near " + formatPoint(r.positions[here]));
         const bool sameArc = r.tags[there].arc == r.tags[here].arc && r.tags[there].u > r.tags[here].u;
         const double uEnd = sameArc ? r.tags[there].u : 1.0;  // 1: the arc's end (also for a one-arc loop)
         const Eigen::Vector2d p = mesh_.points[current], q = mesh_.points[v];

@@ -24,8 +24,6 @@ struct Context {
   }
 };
 
-std::string inQuotes(const std::string& s) { return "\"" + s + "\""; }
-
 void requireObject(const json& j, const Context& at, const std::set<std::string>& allowed) {
   if (!j.is_object()) throw at.error("must be a JSON object");
   for (auto it = j.begin(); it != j.end(); ++it)

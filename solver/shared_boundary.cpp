@@ -12,8 +12,6 @@ namespace ib {
 
 namespace {
 
-std::string inQuotes(const std::string& s) { return "\"" + s + "\""; }
-
 std::string list(const std::vector<std::string>& names) {
   std::string out;
   for (const std::string& n : names) out += (out.empty() ? "" : ", ") + inQuotes(n);
