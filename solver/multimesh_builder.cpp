@@ -93,6 +93,13 @@ void tutteInterior(const ReferenceMesh& mesh, Eigen::MatrixX2d& x) {
     if (unknown[v] >= 0) x.row(v) = interior.row(unknown[v]);
 }
 
+std::string formatLength(double px) {
+  std::ostringstream out;
+  out.precision(3);
+  out << px;
+  return out.str();
+}
+
 struct Attempt {
   std::optional<Multimesh> multimesh;
   std::vector<KeyReport> report;
@@ -180,7 +187,7 @@ BuiltScene buildMultimesh(const Scene& scene, const MultimeshBuildOptions& optio
     if (attempt >= options.refinements)
       throw InputError(file + ": key " + inQuotes(scene.keys[result.failedKey].name) +
                        ": cannot map the mesh onto this key without folding triangles near " + formatPoint(result.failedAt) +
-                       " (tried edge lengths down to " + std::to_string(edgeLength) +
+                       " (tried edge lengths down to " + formatLength(edgeLength) +
                        " px); check that its features and cuts match the other keys there");
     edgeLength /= 1.5;
   }
