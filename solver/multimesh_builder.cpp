@@ -122,7 +122,7 @@ Attempt mapKeys(const Scene& scene, const SharedBoundary& boundary, const Refere
     x = rest;
     placeBoundary(boundary, mesh, k, x);
     if (k != scene.reference) tutteInterior(mesh, x);
-    if (smallestTriangleArea(mesh.triangles, x).first <= 0) {
+    if (k != scene.reference || smallestTriangleArea(mesh.triangles, x).first <= 0) {
       const UntangleResult r = untangle(mesh.triangles, rest, x, locked, options.untangle);
       if (!r.injective) {
         const Triangle& t = mesh.triangles[r.worstTriangle];
