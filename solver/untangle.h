@@ -17,7 +17,7 @@ struct UntangleOptions {
   int outerIterations = 60;     // eps updates at most. Default 60.
   int innerIterations = 300;    // L-BFGS iterations per eps at most. Default 300.
   int memory = 7;               // L-BFGS history length. Default 7.
-  double energyTolerance = 1e-4;  // stop once untangled and the energy changes by less than this, relatively. Default 1e-4.
+  double energyTolerance = 1e-3;  // stop once untangled and the energy changes by less than this, relatively. Default 1e-3.
 };
 
 struct UntangleResult {
