@@ -3,6 +3,7 @@
 #include "atomic_file.h"
 #include "cli.h"
 #include "error.h"
+#include "mesh_quality.h"
 #include "mesh_svg.h"
 #include "multimesh_builder.h"
 #include "multimesh_io.h"
@@ -59,10 +60,14 @@ int runMesh(const std::vector<std::string>& rawArgs) {
   summary["triangles"] = built.multimesh->triangleCount();
   summary["edge_length"] = built.edgeLength;
   summary["keys"] = nlohmann::json::array();
+  const MultimeshQuality quality = measureQuality(*built.multimesh);
   for (size_t k = 0; k < built.report.size(); ++k) {
     nlohmann::json key{{"name", built.report[k].key},
                        {"cohesive_edges", built.report[k].cohesiveEdges},
-                       {"smallest_area", built.report[k].smallestArea}};
+                       {"smallest_area", built.report[k].smallestArea},
+                       {"smallest_angle", quality.keys[k].smallestAngle},
+                       {"mean_smallest_angle", quality.keys[k].meanSmallestAngle},
+                       {"share_under_20_degrees", quality.keys[k].shareUnder20}};
     if (!options.flag("no-pictures")) {
       const fs::path picture = output.parent_path() / (output.stem().string() + "." + built.report[k].key + ".svg");
       const auto [width, height] = built.drawingSizes[k];
@@ -72,6 +77,10 @@ int runMesh(const std::vector<std::string>& rawArgs) {
     }
     summary["keys"].push_back(key);
   }
+  summary["maps"] = nlohmann::json::array();
+  for (const MapQuality& map : quality.maps)
+    summary["maps"].push_back({{"from", built.report[map.from].key}, {"to", built.report[map.to].key},
+                               {"mips_mean", map.mipsMean}, {"mips_max", map.mipsMax}});
   progress.finish();
   if (options.flag("json")) {
     std::printf("%s\n", summary.dump().c_str());
@@ -80,10 +89,16 @@ int runMesh(const std::vector<std::string>& rawArgs) {
   std::printf("%s: %d vertices, %d triangles (edge length %.3g px)\n", scenePath.c_str(), built.multimesh->vertexCount(),
               built.multimesh->triangleCount(), built.edgeLength);
   for (const auto& key : summary["keys"])
-    std::printf("  key %-12s %5d cohesive edges, smallest triangle %.3g px^2%s%s\n",
+    std::printf("  key %-12s %5d cohesive edges, smallest triangle %.3g px^2, angles >= %.1f deg (mean smallest "
+                "%.1f, %.1f%% under 20)%s%s\n",
                 ("\"" + key["name"].get<std::string>() + "\"").c_str(), key["cohesive_edges"].get<int>(),
-                key["smallest_area"].get<double>(), key.contains("picture") ? ", picture " : "",
+                key["smallest_area"].get<double>(), key["smallest_angle"].get<double>(),
+                key["mean_smallest_angle"].get<double>(), 100 * key["share_under_20_degrees"].get<double>(),
+                key.contains("picture") ? ", picture " : "",
                 key.contains("picture") ? key["picture"].get<std::string>().c_str() : "");
+  for (const auto& map : summary["maps"])
+    std::printf("  map %s -> %s: MIPS mean %.3f, max %.3g (2 is conformal)\n", map["from"].get<std::string>().c_str(),
+                map["to"].get<std::string>().c_str(), map["mips_mean"].get<double>(), map["mips_max"].get<double>());
   std::printf("wrote %s\n", output.string().c_str());
   return 0;
 }

@@ -1,0 +1,105 @@
+#include "comesh_energy.h"
+
+#include <Eigen/Dense>
+#include <limits>
+
+namespace ib {
+
+namespace {
+
+// Edge matrix [p1 - p0, p2 - p0] of a triangle, 2 x 2 (columns are edges).
+Eigen::Matrix2d edges(const Eigen::MatrixX2d& x, const Triangle& t) {
+  Eigen::Matrix2d e;
+  e.col(0) = (x.row(t[1]) - x.row(t[0])).transpose();
+  e.col(1) = (x.row(t[2]) - x.row(t[0])).transpose();
+  return e;
+}
+
+// Adds the gradient with respect to an edge matrix (2 x 2) to the triangle's three vertices.
+void scatter(Eigen::MatrixX2d& gradient, const Triangle& t, const Eigen::Matrix2d& dEdges) {
+  gradient.row(t[1]) += dEdges.col(0).transpose();
+  gradient.row(t[2]) += dEdges.col(1).transpose();
+  gradient.row(t[0]) -= (dEdges.col(0) + dEdges.col(1)).transpose();
+}
+
+// adj(E) = det(E) E^-1; linear in E.
+Eigen::Matrix2d adjugate(const Eigen::Matrix2d& e) {
+  Eigen::Matrix2d a;
+  a << e(1, 1), -e(0, 1), -e(1, 0), e(0, 0);
+  return a;
+}
+
+// d(area)/dE for area = det(E) / 2: half the cofactor matrix.
+Eigen::Matrix2d areaGradient(const Eigen::Matrix2d& e) { return 0.5 * adjugate(e).transpose(); }
+
+}  // namespace
+
+double totalArea(const std::vector<Triangle>& triangles, const Eigen::MatrixX2d& x) {
+  double area = 0;
+  for (const Triangle& t : triangles) area += 0.5 * edges(x, t).determinant();
+  return area;
+}
+
+double odtEnergy(const std::vector<Triangle>& triangles, const Eigen::MatrixX2d& x, Eigen::MatrixX2d* gradient) {
+  double energy = 0;
+  for (const Triangle& t : triangles) {
+    const Eigen::Matrix2d e = edges(x, t);
+    const Eigen::Vector2d third = e.col(1) - e.col(0);
+    const double area = 0.5 * e.determinant();
+    const double squares = e.col(0).squaredNorm() + e.col(1).squaredNorm() + third.squaredNorm();
+    energy += area * squares / 12;
+    if (!gradient) continue;
+    // d squares / d e0 = 2 e0 - 2 (e1 - e0); d squares / d e1 = 2 e1 + 2 (e1 - e0).
+    Eigen::Matrix2d dSquares;
+    dSquares.col(0) = 2 * e.col(0) - 2 * third;
+    dSquares.col(1) = 2 * e.col(1) + 2 * third;
+    scatter(*gradient, t, (areaGradient(e) * squares + area * dSquares) / 12);
+  }
+  return energy;
+}
+
+double mipsEnergy(const std::vector<Triangle>& triangles, const Eigen::MatrixX2d& xi, const Eigen::MatrixX2d& xj,
+                  Eigen::MatrixX2d* gradientI, Eigen::MatrixX2d* gradientJ) {
+  double energy = 0;
+  for (const Triangle& t : triangles) {
+    const Eigen::Matrix2d ei = edges(xi, t), ej = edges(xj, t);
+    const double areaJ = 0.5 * ej.determinant();
+    if (!(areaJ > 0)) return std::numeric_limits<double>::infinity();
+    const Eigen::Matrix2d adj = adjugate(ei);
+    const Eigen::Matrix2d m = ej * adj;  // = 2 a_i J, J the Jacobian from key i to key j
+    const double f = m.squaredNorm() / (4 * areaJ);
+    energy += f;
+    if (gradientJ) scatter(*gradientJ, t, m * adj.transpose() / (2 * areaJ) - f / areaJ * areaGradient(ej));
+    if (gradientI) {
+      const Eigen::Matrix2d dAdj = ej.transpose() * m / (2 * areaJ);  // d f / d adj(E_i)
+      Eigen::Matrix2d dEi;
+      dEi << dAdj(1, 1), -dAdj(0, 1), -dAdj(1, 0), dAdj(0, 0);  // adj is linear: chain rule entry by entry
+      scatter(*gradientI, t, dEi);
+    }
+  }
+  return energy;
+}
+
+double comeshBlockEnergy(const std::vector<Triangle>& triangles, const std::vector<Eigen::MatrixX2d>& keys, int i,
+                         Eigen::MatrixX2d* gradient) {
+  const int m = static_cast<int>(keys.size());
+  const Eigen::MatrixX2d& x = keys[i];
+  if (gradient) gradient->setZero(x.rows(), 2);
+  // ODT / area, by the quotient rule.
+  Eigen::MatrixX2d odtGradient = Eigen::MatrixX2d::Zero(x.rows(), 2);
+  const double odt = odtEnergy(triangles, x, gradient ? &odtGradient : nullptr);
+  const double area = totalArea(triangles, x);
+  double energy = odt / area;
+  if (gradient) {
+    Eigen::MatrixX2d areaGrad = Eigen::MatrixX2d::Zero(x.rows(), 2);
+    for (const Triangle& t : triangles) scatter(areaGrad, t, areaGradient(edges(x, t)));
+    *gradient += odtGradient / area - odt / (area * area) * areaGrad;
+  }
+  if (m < 2) return energy;
+  const int next = (i + 1) % m, previous = (i + m - 1) % m;
+  energy += mipsEnergy(triangles, x, keys[next], gradient, nullptr);
+  energy += mipsEnergy(triangles, keys[previous], x, nullptr, gradient);
+  return energy;
+}
+
+}  // namespace ib

@@ -1,0 +1,111 @@
+#include "comesh_energy.h"
+#include "mesh_quality.h"
+#include "shape_generators.h"
+
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <random>
+
+using namespace ib;
+
+namespace {
+
+// A 6 x 4 grid on [0, 3] x [0, 2] with its interior vertices jittered (fixed seed): every
+// triangle stays positive.
+Eigen::MatrixX2d jittered(const GridMesh& grid, unsigned seed, double amount) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> jitter(-amount, amount);
+  Eigen::MatrixX2d x = grid.points;
+  for (int v = 0; v < x.rows(); ++v)
+    if (x(v, 0) > 1e-9 && x(v, 0) < 3 - 1e-9 && x(v, 1) > 1e-9 && x(v, 1) < 2 - 1e-9) x.row(v) += Eigen::RowVector2d(jitter(rng), jitter(rng));
+  return x;
+}
+
+// Central differences of f at x, every coordinate.
+template <typename F>
+Eigen::MatrixX2d numericGradient(const F& f, Eigen::MatrixX2d x) {
+  Eigen::MatrixX2d g(x.rows(), 2);
+  const double h = 1e-6;
+  for (int v = 0; v < x.rows(); ++v)
+    for (int c = 0; c < 2; ++c) {
+      const double keep = x(v, c);
+      x(v, c) = keep + h;
+      const double up = f(x);
+      x(v, c) = keep - h;
+      const double down = f(x);
+      x(v, c) = keep;
+      g(v, c) = (up - down) / (2 * h);
+    }
+  return g;
+}
+
+Eigen::MatrixX2d similarity(const Eigen::MatrixX2d& x, double angle, double scale, const Eigen::RowVector2d& shift) {
+  Eigen::Matrix2d r;
+  r << std::cos(angle), -std::sin(angle), std::sin(angle), std::cos(angle);
+  return (x * r.transpose() * scale).rowwise() + shift;
+}
+
+}  // namespace
+
+TEST_CASE("comesh energy: ODT, MIPS and the block objective match central differences") {
+  const GridMesh grid = rectangleGrid(6, 4, 3, 2);
+  const Eigen::MatrixX2d a = jittered(grid, 7, 0.12), b = similarity(jittered(grid, 8, 0.12), 0.3, 1.7, {4, -1});
+  const Eigen::MatrixX2d c = jittered(grid, 9, 0.12) * 0.8;
+  const auto& t = grid.triangles;
+  Eigen::MatrixX2d g = Eigen::MatrixX2d::Zero(a.rows(), 2);
+  odtEnergy(t, a, &g);
+  CHECK((g - numericGradient([&](const Eigen::MatrixX2d& x) { return odtEnergy(t, x, nullptr); }, a)).norm() <= 1e-6 * g.norm());
+  Eigen::MatrixX2d gi = Eigen::MatrixX2d::Zero(a.rows(), 2), gj = gi;
+  mipsEnergy(t, a, b, &gi, &gj);
+  CHECK((gi - numericGradient([&](const Eigen::MatrixX2d& x) { return mipsEnergy(t, x, b, nullptr, nullptr); }, a)).norm() <=
+        1e-6 * gi.norm());
+  CHECK((gj - numericGradient([&](const Eigen::MatrixX2d& x) { return mipsEnergy(t, a, x, nullptr, nullptr); }, b)).norm() <=
+        1e-6 * gj.norm());
+  const std::vector<Eigen::MatrixX2d> keys = {a, b, c};
+  for (int i = 0; i < 3; ++i) {
+    Eigen::MatrixX2d block;
+    comeshBlockEnergy(t, keys, i, &block);
+    const Eigen::MatrixX2d numeric = numericGradient(
+        [&](const Eigen::MatrixX2d& x) {
+          std::vector<Eigen::MatrixX2d> k = keys;
+          k[i] = x;
+          return comeshBlockEnergy(t, k, i, nullptr);
+        },
+        keys[i]);
+    CHECK((block - numeric).norm() <= 1e-6 * block.norm());
+  }
+}
+
+TEST_CASE("comesh energy: MIPS of a similarity map is 2 per unit area, and larger for any shear") {
+  const GridMesh grid = rectangleGrid(6, 4, 3, 2);
+  const Eigen::MatrixX2d a = jittered(grid, 3, 0.1);
+  const double area = totalArea(grid.triangles, a);
+  CHECK(mipsEnergy(grid.triangles, a, a, nullptr, nullptr) == Approx(2 * area).epsilon(1e-12));
+  CHECK(mipsEnergy(grid.triangles, a, similarity(a, 1.1, 3.5, {2, 2}), nullptr, nullptr) == Approx(2 * area).epsilon(1e-12));
+  Eigen::MatrixX2d sheared = a;
+  sheared.col(0) += 0.4 * a.col(1);
+  CHECK(mipsEnergy(grid.triangles, a, sheared, nullptr, nullptr) > 2 * area * 1.01);
+}
+
+TEST_CASE("comesh energy: ODT prefers the Delaunay diagonal of a rhombus") {
+  // Rhombus with a short horizontal diagonal (1) and a long vertical one (3).
+  Eigen::MatrixX2d x(4, 2);
+  x << -0.5, 0, 0, -1.5, 0.5, 0, 0, 1.5;
+  const std::vector<Triangle> shortDiagonal = {{0, 1, 2}, {0, 2, 3}}, longDiagonal = {{0, 1, 3}, {1, 2, 3}};
+  CHECK(odtEnergy(shortDiagonal, x, nullptr) < odtEnergy(longDiagonal, x, nullptr));
+}
+
+TEST_CASE("mesh quality: a right-triangle grid has 45 degree angles and identical keys map conformally") {
+  const GridMesh grid = rectangleGrid(6, 4, 5, 3);  // unit squares
+  Multimesh mesh(static_cast<int>(grid.points.rows()), grid.triangles);
+  mesh.addKey(grid.points, {}, {});
+  mesh.addKey(similarity(grid.points, 0.5, 2, {1, 1}), {}, {});
+  const MultimeshQuality q = measureQuality(mesh);
+  REQUIRE(q.keys.size() == 2);
+  REQUIRE(q.maps.size() == 2);
+  CHECK(q.keys[0].smallestAngle == Approx(45).epsilon(1e-9));
+  CHECK(q.keys[0].meanSmallestAngle == Approx(45).epsilon(1e-9));
+  CHECK(q.keys[0].shareUnder20 == 0);
+  CHECK(q.maps[0].mipsMean == Approx(2).epsilon(1e-9));
+  CHECK(q.maps[1].mipsMax == Approx(2).epsilon(1e-9));
+}
