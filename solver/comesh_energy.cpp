@@ -7,14 +7,6 @@ namespace ib {
 
 namespace {
 
-// Edge matrix [p1 - p0, p2 - p0] of a triangle, 2 x 2 (columns are edges).
-Eigen::Matrix2d edges(const Eigen::MatrixX2d& x, const Triangle& t) {
-  Eigen::Matrix2d e;
-  e.col(0) = (x.row(t[1]) - x.row(t[0])).transpose();
-  e.col(1) = (x.row(t[2]) - x.row(t[0])).transpose();
-  return e;
-}
-
 // Adds the gradient with respect to an edge matrix (2 x 2) to the triangle's three vertices.
 void scatter(Eigen::MatrixX2d& gradient, const Triangle& t, const Eigen::Matrix2d& dEdges) {
   gradient.row(t[1]) += dEdges.col(0).transpose();
@@ -36,14 +28,14 @@ Eigen::Matrix2d areaGradient(const Eigen::Matrix2d& e) { return 0.5 * adjugate(e
 
 double totalArea(const std::vector<Triangle>& triangles, const Eigen::MatrixX2d& x) {
   double area = 0;
-  for (const Triangle& t : triangles) area += 0.5 * edges(x, t).determinant();
+  for (const Triangle& t : triangles) area += 0.5 * edgeMatrix(x, t).determinant();
   return area;
 }
 
 double odtEnergy(const std::vector<Triangle>& triangles, const Eigen::MatrixX2d& x, Eigen::MatrixX2d* gradient) {
   double energy = 0;
   for (const Triangle& t : triangles) {
-    const Eigen::Matrix2d e = edges(x, t);
+    const Eigen::Matrix2d e = edgeMatrix(x, t);
     const Eigen::Vector2d third = e.col(1) - e.col(0);
     const double area = 0.5 * e.determinant();
     const double squares = e.col(0).squaredNorm() + e.col(1).squaredNorm() + third.squaredNorm();
@@ -62,7 +54,7 @@ double mipsEnergy(const std::vector<Triangle>& triangles, const Eigen::MatrixX2d
                   Eigen::MatrixX2d* gradientI, Eigen::MatrixX2d* gradientJ) {
   double energy = 0;
   for (const Triangle& t : triangles) {
-    const Eigen::Matrix2d ei = edges(xi, t), ej = edges(xj, t);
+    const Eigen::Matrix2d ei = edgeMatrix(xi, t), ej = edgeMatrix(xj, t);
     const double areaJ = 0.5 * ej.determinant();
     if (!(areaJ > 0)) return std::numeric_limits<double>::infinity();
     const Eigen::Matrix2d adj = adjugate(ei);
@@ -92,7 +84,7 @@ double comeshBlockEnergy(const std::vector<Triangle>& triangles, const std::vect
   double energy = odt / area;
   if (gradient) {
     Eigen::MatrixX2d areaGrad = Eigen::MatrixX2d::Zero(x.rows(), 2);
-    for (const Triangle& t : triangles) scatter(areaGrad, t, areaGradient(edges(x, t)));
+    for (const Triangle& t : triangles) scatter(areaGrad, t, areaGradient(edgeMatrix(x, t)));
     *gradient += odtGradient / area - odt / (area * area) * areaGrad;
   }
   if (m < 2) return energy;

@@ -25,17 +25,6 @@ Eigen::Matrix2d closestRotation(const Eigen::Matrix2d& F) {
   return R;
 }
 
-namespace {
-
-Eigen::Matrix2d edgeMatrix(const Eigen::MatrixX2d& x, const Triangle& tri) {
-  Eigen::Matrix2d D;
-  D.col(0) = (x.row(tri[1]) - x.row(tri[0])).transpose();
-  D.col(1) = (x.row(tri[2]) - x.row(tri[0])).transpose();
-  return D;
-}
-
-}  // namespace
-
 DeformationEnergy::DeformationEnergy(const std::vector<Triangle>& triangles, const std::vector<Eigen::MatrixX2d>& keys,
                                      const Eigen::VectorXd& kappa)
     : triangles_(triangles), keyCount_(static_cast<int>(keys.size())) {

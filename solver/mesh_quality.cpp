@@ -38,10 +38,7 @@ MapQuality mapQuality(const std::vector<Triangle>& triangles, const Eigen::Matri
   MapQuality q;
   double area = 0;
   for (const Triangle& t : triangles) {
-    Eigen::Matrix2d ef, et;
-    ef << from(t[1], 0) - from(t[0], 0), from(t[2], 0) - from(t[0], 0), from(t[1], 1) - from(t[0], 1),
-        from(t[2], 1) - from(t[0], 1);
-    et << to(t[1], 0) - to(t[0], 0), to(t[2], 0) - to(t[0], 0), to(t[1], 1) - to(t[0], 1), to(t[2], 1) - to(t[0], 1);
+    const Eigen::Matrix2d ef = edgeMatrix(from, t), et = edgeMatrix(to, t);
     const double a = 0.5 * ef.determinant();
     const Eigen::Matrix2d j = et * ef.inverse();
     const double det = j.determinant();

@@ -15,6 +15,13 @@ std::string keyName(int k) { return "key " + std::to_string(k); }
 
 }  // namespace
 
+Eigen::Matrix2d edgeMatrix(const Eigen::MatrixX2d& x, const Triangle& tri) {
+  Eigen::Matrix2d d;
+  d.col(0) = (x.row(tri[1]) - x.row(tri[0])).transpose();
+  d.col(1) = (x.row(tri[2]) - x.row(tri[0])).transpose();
+  return d;
+}
+
 double signedArea(const Eigen::Vector2d& p0, const Eigen::Vector2d& p1, const Eigen::Vector2d& p2) {
   const Eigen::Vector2d e1 = p1 - p0, e2 = p2 - p0;
   return 0.5 * (e1.x() * e2.y() - e1.y() * e2.x());

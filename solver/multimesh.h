@@ -70,6 +70,9 @@ class Multimesh {
   std::vector<Key> keys_;
 };
 
+// Edge matrix [x1 - x0, x2 - x0] of triangle `tri` in positions x (n x 2): 2 x 2, columns are edges.
+Eigen::Matrix2d edgeMatrix(const Eigen::MatrixX2d& x, const Triangle& tri);
+
 // Signed area of triangle (p0, p1, p2): positive when counter-clockwise in a y-up frame.
 double signedArea(const Eigen::Vector2d& p0, const Eigen::Vector2d& p1, const Eigen::Vector2d& p2);
 
