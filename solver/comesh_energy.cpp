@@ -72,6 +72,16 @@ double mipsEnergy(const std::vector<Triangle>& triangles, const Eigen::MatrixX2d
   return energy;
 }
 
+double comeshEnergy(const std::vector<Triangle>& triangles, const std::vector<Eigen::MatrixX2d>& keys) {
+  const int m = static_cast<int>(keys.size());
+  double energy = 0;
+  for (int i = 0; i < m; ++i) {
+    energy += odtEnergy(triangles, keys[i], nullptr) / totalArea(triangles, keys[i]);
+    if (m > 1) energy += mipsEnergy(triangles, keys[i], keys[(i + 1) % m], nullptr, nullptr);
+  }
+  return energy;
+}
+
 double comeshBlockEnergy(const std::vector<Triangle>& triangles, const std::vector<Eigen::MatrixX2d>& keys, int i,
                          Eigen::MatrixX2d* gradient) {
   const int m = static_cast<int>(keys.size());

@@ -25,6 +25,10 @@ double mipsEnergy(const std::vector<Triangle>& triangles, const Eigen::MatrixX2d
 // Total signed area of a key.
 double totalArea(const std::vector<Triangle>& triangles, const Eigen::MatrixX2d& x);
 
+// The objective of eq. 8: sum over keys of ODT(X_i) / area(X_i), plus the cyclic MIPS sum (eq. 6)
+// MIPS(X_i, X_[i+1]) over i (for two keys: both directions; for one key: none). Units: length^2.
+double comeshEnergy(const std::vector<Triangle>& triangles, const std::vector<Eigen::MatrixX2d>& keys);
+
 // The part of eq. 8 that depends on key i's positions: ODT(X_i) / area(X_i) + MIPS(X_i, X_[i+1])
 // + MIPS(X_[i-1], X_i), indices cyclic over `keys` (for two keys both MIPS directions between
 // them; for one key ODT alone). Units: length^2. Writes d/dX_i into `gradient` (n x 2) when given.
