@@ -102,11 +102,11 @@ class Matcher {
     const auto features = featuresFrom(shapes_[ref_].loops[loop], 0);
     std::vector<int> arcs;
     if (features.empty()) {
-      out_.arcs.push_back({loop, "", "", 1, -1, {}});
+      out_.arcs.push_back({loop, 0, "", "", 1, -1, {}});
       arcs.push_back(static_cast<int>(out_.arcs.size()) - 1);
     }
     for (size_t i = 0; i < features.size(); ++i) {
-      out_.arcs.push_back({loop, features[i].first, features[(i + 1) % features.size()].first, 1, -1, {}});
+      out_.arcs.push_back({loop, static_cast<int>(i), features[i].first, features[(i + 1) % features.size()].first, 1, -1, {}});
       arcs.push_back(static_cast<int>(out_.arcs.size()) - 1);
     }
     out_.loopArcs.push_back(arcs);
@@ -249,8 +249,7 @@ double SharedBoundary::arcLength(int key, int arc) const {
   const BoundaryArc& a = arcs[arc];
   const KeyBoundary& kb = keys[key];
   const std::vector<double>& starts = kb.arcStarts[a.loop];
-  const std::vector<int>& loopArc = loopArcs[a.loop];
-  const size_t i = std::find(loopArc.begin(), loopArc.end(), arc) - loopArc.begin();
+  const size_t i = a.indexInLoop;
   const double length = kb.loops[a.loop].length();
   if (starts.size() == 1) return length;
   double span = starts[(i + 1) % starts.size()] - starts[i];
@@ -261,9 +260,7 @@ double SharedBoundary::arcLength(int key, int arc) const {
 Eigen::Vector2d SharedBoundary::at(int key, int arc, double u) const {
   const BoundaryArc& a = arcs[arc];
   const KeyBoundary& kb = keys[key];
-  const std::vector<int>& loopArc = loopArcs[a.loop];
-  const size_t i = std::find(loopArc.begin(), loopArc.end(), arc) - loopArc.begin();
-  return kb.loops[a.loop].at(kb.arcStarts[a.loop][i] + u * arcLength(key, arc));
+  return kb.loops[a.loop].at(kb.arcStarts[a.loop][a.indexInLoop] + u * arcLength(key, arc));
 }
 
 SharedBoundary matchBoundaries(const Scene& scene, const std::vector<KeyShape>& shapes,

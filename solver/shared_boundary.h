@@ -16,6 +16,7 @@ namespace ib {
 // none). Arcs of a cut's two sides are partners: collocated, reversed, in the keys that close it.
 struct BoundaryArc {
   int loop = 0;               // reference loop index
+  int indexInLoop = 0;        // its place among the loop's arcs, in walking order
   std::string from, to;       // features at its ends; "" for a featureless loop's aligned start
   int segments = 1;           // boundary edges along it, the same in every key
   int partner = -1;           // the arc along the other side of the same cut, or -1
