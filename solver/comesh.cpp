@@ -10,106 +10,204 @@ namespace ib {
 
 namespace {
 
+// One projected gradient step on key i (paper: gradient_descent_step), with per-vertex bisection.
 class VertexStepper {
  public:
-  VertexStepper(const std::vector<Triangle>& triangles, int vertexCount, const std::vector<char>& movable)
-      : triangles_(triangles), movable_(movable), around_(vertexCount) {
-    for (size_t t = 0; t < triangles.size(); ++t)
-      for (int v : triangles[t]) around_[v].push_back(static_cast<int>(t));
-  }
+  struct Bounds {
+    double minimumGap, maximumGap, chordTolerance;  // px
+  };
+  VertexStepper(ComeshMesh& mesh, int key, double odtWeight, const Bounds& bounds)
+      : mesh_(mesh), key_(key), odtWeight_(odtWeight), minimumGap_(bounds.minimumGap), maximumGap_(bounds.maximumGap),
+        chordTolerance_(bounds.chordTolerance) {}
 
-  // One projected gradient step on key i (paper: gradient_descent_step). Returns the relative
-  // energy decrease (0 when no step lowered the energy).
-  double step(std::vector<Eigen::MatrixX2d>& keys, int i, double& stepSize) const {
+  // Returns the relative energy decrease (0 when no step lowered the energy). `stepSize` carries
+  // over between calls: it grows after a success and shrinks while a step fails.
+  double step(double& stepSize) {
     Eigen::MatrixX2d gradient;
-    const double before = comeshBlockEnergy(triangles_, keys, i, &gradient);
-    for (int v = 0; v < gradient.rows(); ++v)
-      if (!movable_[v]) gradient.row(v).setZero();
-    const double largest = gradient.rowwise().norm().maxCoeff();
+    const double before = comeshBlockEnergy(mesh_.triangles, mesh_.keys, key_, &gradient, odtWeight_);
+    const int n = mesh_.vertexCount();
+    direction_.setZero(n, 2);
+    slide_.setZero(n);
+    for (int v = 0; v < n; ++v) {
+      if (mesh_.fixed[v] || mesh_.around[v].empty()) continue;
+      if (!mesh_.onBoundary(v)) {
+        direction_.row(v) = -gradient.row(v);
+      } else if (mesh_.slides(v, key_)) {
+        const Eigen::Vector2d t = tangent(v);
+        slide_[v] = -gradient.row(v).dot(t.transpose()) / t.squaredNorm();
+        direction_.row(v) = slide_[v] * t.transpose();
+      }
+    }
+    const double largest = direction_.rowwise().norm().maxCoeff();
     if (!(largest > 0)) return 0;
-    const Eigen::MatrixX2d start = keys[i];
+    const Eigen::MatrixX2d start = mesh_.keys[key_];
+    const Eigen::VectorXd startU = mesh_.u.col(key_);
     if (!(stepSize > 0)) stepSize = 0.1 * meanEdge(start) / largest;
     for (int attempt = 0; attempt < 20; ++attempt) {
-      moveVertices(keys[i], start, gradient, stepSize);
-      const double after = comeshBlockEnergy(triangles_, keys, i, nullptr);
+      moveVertices(start, startU, stepSize);
+      const double after = comeshBlockEnergy(mesh_.triangles, mesh_.keys, key_, nullptr, odtWeight_);
       if (after < before) {
         stepSize *= 1.5;
         return (before - after) / before;
       }
       stepSize *= 0.5;
     }
-    keys[i] = start;
+    mesh_.keys[key_] = start;
+    mesh_.u.col(key_) = startU;
     return 0;
   }
 
  private:
-  double meanEdge(const Eigen::MatrixX2d& x) const {
-    double sum = 0;
-    for (const Triangle& t : triangles_) sum += (x.row(t[1]) - x.row(t[0])).norm();
-    return sum / std::max<size_t>(triangles_.size(), 1);
+  // d point / du at the vertex's place on its arc in this key (px per unit u).
+  Eigen::Vector2d tangent(int v) const {
+    const double u = mesh_.u(v, key_), h = 1e-4;
+    const double lo = std::max(0.0, u - h), hi = std::min(1.0, u + h);
+    return (mesh_.point(key_, mesh_.arc[v], hi) - mesh_.point(key_, mesh_.arc[v], lo)) / (hi - lo);
   }
 
-  // x = start - stepSize * gradient, vertex by vertex, each step halved until its one-ring is positive.
-  void moveVertices(Eigen::MatrixX2d& x, const Eigen::MatrixX2d& start, const Eigen::MatrixX2d& gradient,
-                    double stepSize) const {
+  double meanEdge(const Eigen::MatrixX2d& x) const {
+    double sum = 0;
+    for (const Triangle& t : mesh_.triangles) sum += (x.row(t[1]) - x.row(t[0])).norm();
+    return sum / std::max<size_t>(mesh_.triangles.size(), 1);
+  }
+
+  // Fraction range a sliding vertex must stay strictly inside: its walk neighbours' fractions.
+  std::pair<double, double> slideRange(int v) const {
+    const int p = mesh_.previous[v], q = mesh_.next[v];
+    const double lo = (mesh_.arc[p] == mesh_.arc[v]) ? mesh_.u(p, key_) : 0.0;
+    const double hi = (mesh_.arc[q] == mesh_.arc[v] && mesh_.u(q, key_) > 0) ? mesh_.u(q, key_) : 1.0;
+    return {lo, hi};
+  }
+
+  // Every movable vertex goes `stepSize` along its direction, halved until its one-ring stays positive.
+  void moveVertices(const Eigen::MatrixX2d& start, const Eigen::VectorXd& startU, double stepSize) {
+    Eigen::MatrixX2d& x = mesh_.keys[key_];
     x = start;
+    mesh_.u.col(key_) = startU;
     for (int v = 0; v < x.rows(); ++v) {
-      if (!movable_[v]) continue;
-      Eigen::RowVector2d move = -stepSize * gradient.row(v);
-      for (int halving = 0; halving < 30; ++halving, move *= 0.5) {
-        x.row(v) = start.row(v) + move;
-        if (oneRingPositive(x, v)) break;
+      if (direction_.row(v).isZero()) continue;
+      double scale = stepSize;
+      for (int halving = 0; halving < 30; ++halving, scale *= 0.5) {
+        if (slide_[v] != 0) {
+          const double u = startU[v] + scale * slide_[v];
+          const auto [lo, hi] = slideRange(v);
+          if (!(u > lo && u < hi)) continue;
+          x.row(v) = mesh_.point(key_, mesh_.arc[v], u).transpose();
+          mesh_.u(v, key_) = u;
+          if (!keepsGap(v) || !followsOutline(v, startU[v])) {
+            x.row(v) = start.row(v);
+            mesh_.u(v, key_) = startU[v];
+            continue;
+          }
+        } else {
+          x.row(v) = start.row(v) + scale * direction_.row(v);
+        }
+        if (oneRingPositive(v)) break;
         x.row(v) = start.row(v);
+        mesh_.u(v, key_) = startU[v];
       }
     }
   }
 
-  bool oneRingPositive(const Eigen::MatrixX2d& x, int v) const {
-    for (int t : around_[v])
-      if (!(edgeMatrix(x, triangles_[t]).determinant() > 0)) return false;
+  // A sliding vertex stays between `minimumGap_` and `maximumGap_` from its walk neighbours, so
+  // that the boundary does not bunch up where the maps would like it infinitely dense (at corners
+  // that map to straight outline the conformal optimum has no lower bound on spacing) nor thin out.
+  bool keepsGap(int v) const {
+    const Eigen::MatrixX2d& x = mesh_.keys[key_];
+    const double before = (x.row(v) - x.row(mesh_.previous[v])).norm(), after = (x.row(v) - x.row(mesh_.next[v])).norm();
+    return before >= minimumGap_ && after >= minimumGap_ && before <= maximumGap_ && after <= maximumGap_;
+  }
+
+  // The boundary edges on either side of a sliding vertex stay within tolerance of the outline,
+  // or at least no further from it than before the move (from fraction `before`).
+  bool followsOutline(int v, double before) const {
+    if (!mesh_.chordDeviation) return true;
+    const auto [lo, hi] = slideRange(v);
+    const int arc = mesh_.arc[v];
+    const double now = mesh_.u(v, key_);
+    const double allowed = std::max({chordTolerance_, mesh_.chordDeviation(key_, arc, lo, before),
+                                     mesh_.chordDeviation(key_, arc, before, hi)});
+    return mesh_.chordDeviation(key_, arc, lo, now) <= allowed && mesh_.chordDeviation(key_, arc, now, hi) <= allowed;
+  }
+
+  bool oneRingPositive(int v) const {
+    for (int t : mesh_.around[v])
+      if (!(edgeMatrix(mesh_.keys[key_], mesh_.triangles[t]).determinant() > 0)) return false;
     return true;
   }
 
-  const std::vector<Triangle>& triangles_;
-  const std::vector<char>& movable_;
-  std::vector<std::vector<int>> around_;  // per vertex: incident triangles
+  ComeshMesh& mesh_;
+  int key_;
+  double odtWeight_;
+  double minimumGap_, maximumGap_;  // px
+  double chordTolerance_;  // px
+  Eigen::MatrixX2d direction_;  // n x 2: descent direction per vertex (0 for fixed ones)
+  Eigen::VectorXd slide_;       // n: descent direction in u for sliding vertices, else 0
 };
+
+int cohesiveCount(const Multimesh& mesh) {
+  int count = 0;
+  for (int k = 0; k < mesh.keyCount(); ++k) count += static_cast<int>(mesh.cohesivePairs(k).size());
+  return count;
+}
+
+// Per key: balance x area / unit^2 (see ComeshOptions::odtBalance).
+std::vector<double> balancedOdtWeights(const ComeshMesh& mesh, const Remesher& remesher, double balance) {
+  std::vector<double> weights;
+  for (int k = 0; k < mesh.keyCount(); ++k)
+    weights.push_back(balance * totalArea(mesh.triangles, mesh.keys[k]) / std::pow(remesher.unitLength(k), 2));
+  return weights;
+}
 
 }  // namespace
 
-std::vector<char> interiorVertices(const Multimesh& mesh) {
-  std::vector<char> movable(mesh.vertexCount(), 0);
-  for (auto v : mesh.topology().vertices()) movable[v.idx()] = !mesh.topology().is_boundary(v);
-  return movable;
-}
-
-ComeshReport comeshOptimize(Multimesh& mesh, const std::vector<char>& movable, const ComeshOptions& options) {
+Multimesh comeshOptimize(const Multimesh& input, const ComeshBoundary* boundary, const ComeshOptions& options,
+                         ComeshReport* report) {
   const auto started = std::chrono::steady_clock::now();
-  const std::vector<Triangle> triangles = mesh.triangles();
+  ComeshMesh mesh(input, boundary);
+  Remesher remesher(mesh, options.bounds);
+  const std::vector<double> odtWeights = balancedOdtWeights(mesh, remesher, options.odtBalance);
   const int m = mesh.keyCount();
-  std::vector<Eigen::MatrixX2d> keys;
-  for (int k = 0; k < m; ++k) keys.push_back(mesh.keyPositions(k));
-  const VertexStepper stepper(triangles, mesh.vertexCount(), movable);
   std::vector<double> stepSize(m, 0.0);
-  ComeshReport report;
+  ComeshReport r;
+  r.keys = m;
+  r.verticesIn = input.vertexCount();
+  r.trianglesIn = input.triangleCount();
+  r.cohesiveIn = cohesiveCount(input);
+  r.energyIn = comeshEnergy(mesh.triangles, mesh.keys, odtWeights);
   for (int outer = 0; outer < options.outerIterations; ++outer) {
-    report.outerIterations = outer + 1;
+    r.outerIterations = outer + 1;
     double total = 0;
     for (int i = 0; i < m; ++i) {
+      const double unit = remesher.unitLength(i);
+      VertexStepper stepper(mesh, i, odtWeights[i],
+                            {options.bounds.collapseLength * unit, options.bounds.splitLength * unit,
+                             options.bounds.chordTolerance * unit});
       double innerResidual = 0;
       for (int inner = 0; inner < options.innerIterations; ++inner) {
-        ++report.innerIterations;
-        const double residual = stepper.step(keys, i, stepSize[i]);
+        ++r.innerIterations;
+        if (options.remesh) {
+          remesher.flipEdges(r.remesh);
+          remesher.splitEdges(r.remesh);
+        }
+        const double residual = stepper.step(stepSize[i]);
+        if (options.remesh) remesher.collapseEdges(r.remesh);
         innerResidual = std::max(innerResidual, residual);
         if (residual < options.innerTolerance) break;
       }
       total += innerResidual;
     }
+    if (options.progress) options.progress(outer + 1, comeshEnergy(mesh.triangles, mesh.keys, odtWeights));
     if (total < options.outerTolerance) break;
   }
-  for (int k = 0; k < m; ++k) mesh.setKeyPositions(k, keys[k]);
-  report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  return report;
+  Multimesh out = mesh.toMultimesh();
+  r.verticesOut = out.vertexCount();
+  r.trianglesOut = out.triangleCount();
+  r.cohesiveOut = cohesiveCount(out);
+  r.energyOut = comeshEnergy(mesh.triangles, mesh.keys, odtWeights);
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  if (report) *report = r;
+  return out;
 }
 
 }  // namespace ib

@@ -72,18 +72,20 @@ double mipsEnergy(const std::vector<Triangle>& triangles, const Eigen::MatrixX2d
   return energy;
 }
 
-double comeshEnergy(const std::vector<Triangle>& triangles, const std::vector<Eigen::MatrixX2d>& keys) {
+double comeshEnergy(const std::vector<Triangle>& triangles, const std::vector<Eigen::MatrixX2d>& keys,
+                    const std::vector<double>& odtWeights) {
   const int m = static_cast<int>(keys.size());
   double energy = 0;
   for (int i = 0; i < m; ++i) {
-    energy += odtEnergy(triangles, keys[i], nullptr) / totalArea(triangles, keys[i]);
+    const double weight = odtWeights.empty() ? 1.0 : odtWeights[i];
+    energy += weight * odtEnergy(triangles, keys[i], nullptr) / totalArea(triangles, keys[i]);
     if (m > 1) energy += mipsEnergy(triangles, keys[i], keys[(i + 1) % m], nullptr, nullptr);
   }
   return energy;
 }
 
 double comeshBlockEnergy(const std::vector<Triangle>& triangles, const std::vector<Eigen::MatrixX2d>& keys, int i,
-                         Eigen::MatrixX2d* gradient) {
+                         Eigen::MatrixX2d* gradient, double odtWeight) {
   const int m = static_cast<int>(keys.size());
   const Eigen::MatrixX2d& x = keys[i];
   if (gradient) gradient->setZero(x.rows(), 2);
@@ -91,11 +93,11 @@ double comeshBlockEnergy(const std::vector<Triangle>& triangles, const std::vect
   Eigen::MatrixX2d odtGradient = Eigen::MatrixX2d::Zero(x.rows(), 2);
   const double odt = odtEnergy(triangles, x, gradient ? &odtGradient : nullptr);
   const double area = totalArea(triangles, x);
-  double energy = odt / area;
+  double energy = odtWeight * odt / area;
   if (gradient) {
     Eigen::MatrixX2d areaGrad = Eigen::MatrixX2d::Zero(x.rows(), 2);
     for (const Triangle& t : triangles) scatter(areaGrad, t, areaGradient(edgeMatrix(x, t)));
-    *gradient += odtGradient / area - odt / (area * area) * areaGrad;
+    *gradient += odtWeight * (odtGradient / area - odt / (area * area) * areaGrad);
   }
   if (m < 2) return energy;
   const int next = (i + 1) % m, previous = (i + m - 1) % m;

@@ -8,6 +8,7 @@
 #include <Eigen/SparseCholesky>
 #include <algorithm>
 #include <filesystem>
+#include <memory>
 #include <sstream>
 
 namespace ib {
@@ -100,6 +101,31 @@ std::string formatLength(double px) {
   return out.str();
 }
 
+// Arcs, fractions and walk order of the reference mesh's boundary vertices, for Comesh sliding.
+ComeshBoundary comeshBoundary(const SharedBoundary& boundary, const ReferenceMesh& mesh, int keys) {
+  ComeshBoundary out;
+  const size_t n = mesh.tags.size();
+  out.arc.resize(n);
+  out.u.resize(n);
+  out.next.assign(n, -1);
+  for (size_t v = 0; v < n; ++v) {
+    out.arc[v] = mesh.tags[v].arc;
+    out.u[v] = mesh.tags[v].u;
+  }
+  for (size_t a = 0; a < boundary.arcs.size(); ++a) {
+    const std::vector<int> chain = chainWithEnd(mesh, static_cast<int>(a));
+    for (size_t i = 0; i + 1 < chain.size(); ++i) out.next[chain[i]] = chain[i + 1];
+    out.closedIn.emplace_back(keys, 0);
+    for (int k = 0; k < keys; ++k) out.closedIn.back()[k] = closedIn(boundary.arcs[a], k);
+  }
+  auto shared = std::make_shared<const SharedBoundary>(boundary);
+  out.point = [shared](int key, int arc, double u) { return shared->at(key, arc, u); };
+  out.chordDeviation = [shared](int key, int arc, double u0, double u1) {
+    return shared->chordDeviation(key, arc, u0, u1);
+  };
+  return out;
+}
+
 struct Attempt {
   std::optional<Multimesh> multimesh;
   std::vector<KeyReport> report;
@@ -178,6 +204,7 @@ BuiltScene buildMultimesh(const Scene& scene, const MultimeshBuildOptions& optio
     Attempt result = mapKeys(scene, boundary, mesh, options);
     if (result.multimesh) {
       built.multimesh = std::move(result.multimesh);
+      built.boundary = comeshBoundary(boundary, mesh, m);
       built.report = std::move(result.report);
       built.edgeLength = edgeLength;
       built.attempts = attempt + 1;

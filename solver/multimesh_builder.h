@@ -3,6 +3,7 @@
 // other key without foldovers.
 #pragma once
 
+#include "comesh_mesh.h"
 #include "key_shape.h"
 #include "multimesh.h"
 #include "reference_mesh.h"
@@ -39,6 +40,7 @@ struct BuiltScene {
   std::vector<std::vector<Outline>> outlines;  // [key]: traced drawing
   std::vector<KeyShape> shapes;                // [key]: after features and cuts
   std::optional<Multimesh> multimesh;          // keys in scene order, positions in drawing pixels
+  ComeshBoundary boundary;                     // the multimesh's boundary vertices on the keys' outlines
   std::vector<KeyReport> report;               // [key]
   double edgeLength = 0;                       // px: the edge length finally used
   int attempts = 0;                            // meshing attempts made (1 = no refinement needed)

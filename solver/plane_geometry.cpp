@@ -85,4 +85,23 @@ Eigen::Vector2d ArcLengthLoop::at(double s) const {
   return (1 - t) * points_[i] + t * points_[(i + 1) % points_.size()];
 }
 
+double ArcLengthLoop::chordDeviation(double s0, double s1) const {
+  const double total = length();
+  if (points_.size() < 2 || !(total > 0) || !(s1 > s0)) return 0;
+  const Eigen::Vector2d a = at(s0), b = at(s1);
+  double base = std::floor(s0 / total) * total;  // start of the lap s0 lies in
+  size_t i = std::upper_bound(cumulative_.begin(), cumulative_.end(), s0 - base) - cumulative_.begin();
+  double worst = 0;
+  for (;; ++i) {
+    if (i >= points_.size()) {  // cumulative_[size] is point 0 of the next lap
+      i = 0;
+      base += total;
+    }
+    if (base + cumulative_[i] >= s1) break;
+    const Eigen::Vector2d& p = points_[i];
+    worst = std::max(worst, (a + closestParameter(a, b, p) * (b - a) - p).norm());
+  }
+  return worst;
+}
+
 }  // namespace ib

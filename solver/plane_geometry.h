@@ -39,6 +39,9 @@ class ArcLengthLoop {
   double parameterOfPoint(int i) const { return cumulative_[i]; }
   // The point at arc length s, s taken modulo length().
   Eigen::Vector2d at(double s) const;
+  // Largest distance from the loop between arc lengths s0 <= s1 (walking forwards, modulo
+  // length()) to the chord from at(s0) to at(s1): how far the chord cuts across corners.
+  double chordDeviation(double s0, double s1) const;
 
  private:
   Polyline points_;

@@ -21,6 +21,10 @@ struct ExampleScene {
 // The scenes that must build.
 std::vector<ExampleScene> goodScenes();
 
+// Comesh Optimization cases (paper Figures 4, 10, 18): pentagon to star, thin-spoked stars with
+// five and six tips, square to hexagon. Features pin the polygon's corners to the star's tips.
+std::vector<ExampleScene> comeshScenes();
+
 // Writes FOLDER/NAME/scene.json and its drawings.
 void writeScene(const ExampleScene& scene, const std::string& folder);
 

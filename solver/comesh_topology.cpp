@@ -1,0 +1,306 @@
+#include "comesh_topology.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace ib {
+
+namespace {
+
+constexpr double kDegrees = 180.0 / 3.14159265358979323846;
+
+struct AngleRange {
+  double smallest = 180, largest = 0;  // degrees
+  void add(const AngleRange& other) {
+    smallest = std::min(smallest, other.smallest);
+    largest = std::max(largest, other.largest);
+  }
+};
+
+// Angles of triangle (p0, p1, p2), degrees; a triangle that is not positive counts as 0 and 180.
+AngleRange angles(const Eigen::Vector2d& p0, const Eigen::Vector2d& p1, const Eigen::Vector2d& p2) {
+  const Eigen::Vector2d e[3] = {p1 - p0, p2 - p1, p0 - p2};
+  if (!(signedArea(p0, p1, p2) > 0)) return {0, 180};
+  AngleRange range;
+  for (int i = 0; i < 3; ++i) {
+    const Eigen::Vector2d from = -e[(i + 2) % 3], to = e[i];
+    const double a = std::atan2(std::abs(from.x() * to.y() - from.y() * to.x()), from.dot(to)) * kDegrees;
+    range.add({a, a});
+  }
+  return range;
+}
+
+class Timer {
+ public:
+  explicit Timer(double& seconds) : seconds_(seconds), start_(std::chrono::steady_clock::now()) {}
+  ~Timer() { seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
+
+ private:
+  double& seconds_;
+  std::chrono::steady_clock::time_point start_;
+};
+
+// Angles of `corners` (triangles given by vertex indices) over every key, with vertex `moved`
+// placed at `position[k]` instead of its own position (moved = -1: none).
+AngleRange keyAngles(const ComeshMesh& mesh, const std::vector<Triangle>& corners, int moved,
+                            const std::vector<Eigen::Vector2d>& position) {
+  AngleRange range;
+  for (int k = 0; k < mesh.keyCount(); ++k) {
+    auto at = [&](int v) -> Eigen::Vector2d {
+      return v == moved ? position[k] : Eigen::Vector2d(mesh.keys[k].row(v).transpose());
+    };
+    for (const Triangle& t : corners) range.add(angles(at(t[0]), at(t[1]), at(t[2])));
+  }
+  return range;
+}
+
+std::vector<int> neighbours(const ComeshMesh& mesh, int v) {
+  std::vector<int> out;
+  for (int t : mesh.around[v])
+    for (int w : mesh.triangles[t])
+      if (w != v) out.push_back(w);
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+bool connected(const ComeshMesh& mesh, int a, int b) {
+  for (int t : mesh.around[a])
+    for (int w : mesh.triangles[t])
+      if (w == b) return true;
+  return false;
+}
+
+// The triangles of edge (a, b) before, and after a vertex v splits it, as corner lists.
+void splitTriangles(const ComeshMesh& mesh, int a, int b, int v, std::vector<Triangle>& before,
+                    std::vector<Triangle>& after) {
+  for (const auto& [p, q] : {std::pair{a, b}, std::pair{b, a}}) {
+    const int t = mesh.triangleWith(p, q);
+    if (t < 0) continue;
+    const int c = mesh.thirdCorner(t, p, q);
+    before.push_back({p, q, c});
+    after.push_back({p, v, c});
+    after.push_back({v, q, c});
+  }
+}
+
+}  // namespace
+
+Remesher::Remesher(ComeshMesh& mesh, const RemeshOptions& options) : mesh_(mesh), options_(options) {
+  for (int k = 0; k < mesh.keyCount(); ++k) {
+    double sum = 0;
+    for (const Triangle& t : mesh.triangles)
+      for (int i = 0; i < 3; ++i) sum += (mesh.keys[k].row(t[i]) - mesh.keys[k].row(t[(i + 1) % 3])).norm();
+    unit_.push_back(sum / std::max<size_t>(3 * mesh.triangles.size(), 1));
+  }
+}
+
+double Remesher::relativeLength(int k, int a, int b) const {
+  return (mesh_.keys[k].row(a) - mesh_.keys[k].row(b)).norm() / unit_[k];
+}
+
+double Remesher::chordDeviation(int k, int a, int b) const {
+  if (!mesh_.chordDeviation) return 0;
+  const int arc = mesh_.arc[a];
+  const double end = (mesh_.arc[b] == arc && mesh_.u(b, k) > 0) ? mesh_.u(b, k) : 1.0;
+  return mesh_.chordDeviation(k, arc, mesh_.u(a, k), end);
+}
+
+bool Remesher::flipImproves(int a, int b, int c, int d) const {
+  const std::vector<Eigen::Vector2d> none;
+  const AngleRange before = keyAngles(mesh_, {{a, b, c}, {b, a, d}}, -1, none);
+  const AngleRange after = keyAngles(mesh_, {{c, a, d}, {d, b, c}}, -1, none);
+  return after.smallest > 0 && after.largest < before.largest - 1e-6;
+}
+
+int Remesher::flipEdges(RemeshCounts& counts) {
+  Timer timer(counts.flipSeconds);
+  int flips = 0;
+  for (size_t t = 0; t < mesh_.triangles.size(); ++t)
+    for (int i = 0; i < 3; ++i) {
+      const Triangle tri = mesh_.triangles[t];
+      const int a = tri[i], b = tri[(i + 1) % 3];
+      if (a < 0 || a > b) continue;
+      const int twin = mesh_.triangleWith(b, a);
+      if (twin < 0) continue;  // boundary (and so every cohesive) edge
+      const int c = tri[(i + 2) % 3], d = mesh_.thirdCorner(twin, b, a);
+      if (c == d || (mesh_.onBoundary(c) && mesh_.onBoundary(d)) || connected(mesh_, c, d)) continue;
+      if (!flipImproves(a, b, c, d)) continue;
+      mesh_.flip(a, b);
+      ++flips;
+    }
+  counts.flips += flips;
+  return flips;
+}
+
+std::vector<Eigen::Vector2d> Remesher::boundaryMidpoint(int a, int b, Eigen::RowVectorXd& u) const {
+  const int m = mesh_.keyCount(), arc = mesh_.arc[a];
+  u.resize(m);
+  std::vector<Eigen::Vector2d> position(m);
+  for (int k = 0; k < m; ++k) {
+    const double end = (mesh_.arc[b] == arc && mesh_.u(b, k) > 0) ? mesh_.u(b, k) : 1.0;
+    u[k] = 0.5 * (mesh_.u(a, k) + end);
+    position[k] = mesh_.closedIn[arc][k] ? Eigen::Vector2d(0.5 * (mesh_.keys[k].row(a) + mesh_.keys[k].row(b)).transpose())
+                                         : mesh_.point(k, arc, u[k]);
+  }
+  return position;
+}
+
+int Remesher::splitEdges(RemeshCounts& counts) {
+  Timer timer(counts.splitSeconds);
+  int splits = 0;
+  const size_t count = mesh_.triangles.size();
+  for (size_t t = 0; t < count; ++t)
+    for (int i = 0; i < 3; ++i) {
+      const Triangle tri = mesh_.triangles[t];
+      const int a = tri[i], b = tri[(i + 1) % 3];
+      if (a < 0 || (a > b && mesh_.triangleWith(b, a) >= 0)) continue;
+      bool longEverywhere = true;
+      for (int k = 0; k < mesh_.keyCount() && longEverywhere; ++k)
+        longEverywhere = relativeLength(k, a, b) > options_.splitLength;
+      if (longEverywhere && trySplit(a, b)) ++splits;
+    }
+  counts.splits += splits;
+  return splits;
+}
+
+bool Remesher::trySplit(int a, int b) {
+  const int m = mesh_.keyCount(), v = mesh_.vertexCount();
+  const bool boundary = mesh_.triangleWith(a, b) < 0 || mesh_.triangleWith(b, a) < 0;
+  std::vector<Eigen::Vector2d> position(m);
+  Eigen::RowVectorXd u = Eigen::RowVectorXd::Zero(m);
+  if (boundary) {
+    if (!mesh_.point) return false;
+    if (mesh_.next[b] == a) std::swap(a, b);
+    if (mesh_.next[a] != b) return false;
+    position = boundaryMidpoint(a, b, u);
+  } else {
+    for (int k = 0; k < m; ++k) position[k] = 0.5 * (mesh_.keys[k].row(a) + mesh_.keys[k].row(b)).transpose();
+  }
+  std::vector<Triangle> before, after;
+  splitTriangles(mesh_, a, b, v, before, after);
+  for (const Triangle& t : before)
+    if (boundary && mesh_.onBoundary(t[2])) return false;
+  const std::vector<Eigen::Vector2d> none;
+  const AngleRange old = keyAngles(mesh_, before, -1, none), fresh = keyAngles(mesh_, after, v, position);
+  if (fresh.smallest < options_.collapseAngle || fresh.largest > old.largest) return false;
+  // A cut side splits with its partner, the new vertices collocated where the cut is closed.
+  const std::array<int, 2> partner = boundary ? mesh_.cutPartner(a, b) : std::array<int, 2>{-1, -1};
+  std::vector<Eigen::Vector2d> partnerPosition;
+  Eigen::RowVectorXd partnerU;
+  if (partner[0] >= 0) {
+    const bool reversed = mesh_.next[partner[1]] == partner[0];
+    if (!reversed && mesh_.next[partner[0]] != partner[1]) return false;
+    partnerPosition = reversed ? boundaryMidpoint(partner[1], partner[0], partnerU)
+                               : boundaryMidpoint(partner[0], partner[1], partnerU);
+    for (int k = 0; k < m; ++k)
+      if (mesh_.closedIn[mesh_.arc[a]][k]) partnerPosition[k] = position[k];
+    std::vector<Triangle> pb, pa;
+    splitTriangles(mesh_, partner[0], partner[1], v, pb, pa);
+    if (mesh_.onBoundary(pb.at(0)[2])) return false;
+    const AngleRange po = keyAngles(mesh_, pb, -1, none), pf = keyAngles(mesh_, pa, v, partnerPosition);
+    if (pf.smallest < options_.collapseAngle || pf.largest > po.largest) return false;
+  }
+  auto insert = [&](int p, int q, const std::vector<Eigen::Vector2d>& at, const Eigen::RowVectorXd& params) {
+    const int w = mesh_.addVertex(at);
+    if (boundary) {
+      mesh_.arc[w] = mesh_.arc[p];
+      mesh_.u.row(w) = params;
+      for (int k = 0; k < m; ++k) mesh_.outline[k][w] = !mesh_.closedIn[mesh_.arc[p]][k];
+    }
+    mesh_.split(p, q, w);
+    return w;
+  };
+  insert(a, b, position, u);
+  if (partner[0] >= 0) {
+    const int w = insert(partner[0], partner[1], partnerPosition, partnerU);
+    mesh_.splitPairs(a, b, v, partner[0], partner[1], w);
+  }
+  return true;
+}
+
+bool Remesher::collapseCandidate(int a, int b) const {
+  bool shortEverywhere = true, thinEverywhere = true;
+  const int t1 = mesh_.triangleWith(a, b), t2 = mesh_.triangleWith(b, a);
+  for (int k = 0; k < mesh_.keyCount(); ++k) {
+    shortEverywhere = shortEverywhere && relativeLength(k, a, b) < options_.collapseLength;
+    double opposite = 180;
+    for (const auto& [t, p, q] : {std::tuple{t1, a, b}, std::tuple{t2, b, a}}) {
+      if (t < 0) continue;
+      const int c = mesh_.thirdCorner(t, p, q);
+      const Eigen::Vector2d pc = mesh_.keys[k].row(c).transpose();
+      const Eigen::Vector2d e1 = mesh_.keys[k].row(p).transpose() - pc, e2 = mesh_.keys[k].row(q).transpose() - pc;
+      opposite = std::min(opposite, std::atan2(std::abs(e1.x() * e2.y() - e1.y() * e2.x()), e1.dot(e2)) * kDegrees);
+    }
+    thinEverywhere = thinEverywhere && opposite < options_.collapseAngle;
+  }
+  return shortEverywhere || thinEverywhere;
+}
+
+int Remesher::collapseEdges(RemeshCounts& counts) {
+  Timer timer(counts.collapseSeconds);
+  int collapses = 0;
+  for (size_t t = 0; t < mesh_.triangles.size(); ++t)
+    for (int i = 0; i < 3; ++i) {
+      const Triangle tri = mesh_.triangles[t];
+      const int a = tri[i], b = tri[(i + 1) % 3];
+      if (a < 0 || (a > b && mesh_.triangleWith(b, a) >= 0) || !collapseCandidate(a, b)) continue;
+      if (tryCollapse(a, b) || tryCollapse(b, a)) ++collapses;
+    }
+  mesh_.compact();
+  counts.collapses += collapses;
+  return collapses;
+}
+
+bool Remesher::collapsible(int from, int to) const {
+  if (mesh_.fixed[from]) return false;
+  if (!mesh_.onBoundary(from)) return mesh_.triangleWith(from, to) >= 0 && mesh_.triangleWith(to, from) >= 0;
+  // A boundary vertex may only merge into a walk neighbour, when it slides in every key (no
+  // feature, no cut side) and its loop keeps at least three vertices.
+  if (mesh_.next[from] != to && mesh_.previous[from] != to) return false;
+  for (int k = 0; k < mesh_.keyCount(); ++k)
+    if (!mesh_.slides(from, k)) return false;
+  return mesh_.next[mesh_.next[mesh_.next[from]]] != from;
+}
+
+bool Remesher::tryCollapse(int from, int to) {
+  if (!collapsible(from, to)) return false;
+  // Link condition: the ends share exactly the edge's opposite corners (two inside, one on the boundary).
+  const std::vector<int> ring = neighbours(mesh_, from), other = neighbours(mesh_, to);
+  std::vector<int> shared;
+  std::set_intersection(ring.begin(), ring.end(), other.begin(), other.end(), std::back_inserter(shared));
+  if (shared.size() != (mesh_.onBoundary(from) ? 1u : 2u)) return false;
+  const int walk = mesh_.next[from] == to ? mesh_.previous[from] : mesh_.next[from];  // -1 inside
+  if (walk >= 0) {  // the merged boundary edge follows the outline as well as the two it replaces
+    const int first = mesh_.previous[from], last = mesh_.next[from];
+    for (int k = 0; k < mesh_.keyCount(); ++k) {
+      const double allowed = std::max({options_.chordTolerance * unit_[k], chordDeviation(k, first, from),
+                                       chordDeviation(k, from, last)});
+      if (chordDeviation(k, first, last) > allowed) return false;
+    }
+  }
+  std::vector<Triangle> before, after;
+  for (int t : mesh_.around[from]) {
+    Triangle c = mesh_.triangles[t];
+    before.push_back(c);
+    if (std::find(c.begin(), c.end(), to) != c.end()) continue;
+    std::replace(c.begin(), c.end(), from, to);
+    after.push_back(c);
+  }
+  for (int n : ring) {
+    if (n == to) continue;
+    if (n != walk && mesh_.onBoundary(to) && mesh_.onBoundary(n) && !connected(mesh_, to, n)) return false;
+    bool longEverywhere = true;
+    for (int k = 0; k < mesh_.keyCount() && longEverywhere; ++k)
+      longEverywhere = relativeLength(k, to, n) > options_.splitLength;
+    if (longEverywhere) return false;
+  }
+  const std::vector<Eigen::Vector2d> none;
+  const AngleRange old = keyAngles(mesh_, before, -1, none), fresh = keyAngles(mesh_, after, -1, none);
+  if (!(fresh.smallest > 0) || fresh.smallest < old.smallest) return false;
+  mesh_.collapse(from, to);
+  return true;
+}
+
+}  // namespace ib

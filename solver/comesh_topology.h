@@ -1,0 +1,65 @@
+// Edge flips, splits and collapses of Comesh Optimization (paper section 4.6, Figure 13), applied
+// to the topology shared by every key, so to all keys at once or not at all. Every operation keeps
+// every triangle positive in every key, never touches a feature, never adds an interior edge
+// between two boundary vertices, and keeps cut sides collocated where their cut is closed.
+#pragma once
+
+#include "comesh_mesh.h"
+
+namespace ib {
+
+// Bounds in the spirit of Brochu and Bridson 2009 (El Topo): edge lengths relative to the key's
+// mean edge length at the start, angles in degrees.
+struct RemeshOptions {
+  double splitLength = 1.5;     // split an edge longer than this (relative) in every key. Default 1.5.
+  double collapseLength = 0.5;  // collapse an edge shorter than this (relative) in every key. Default 0.5.
+  double collapseAngle = 10;    // degrees: or one of its opposite angles is smaller in every key. Default 10.
+  // A boundary edge may stray at most this far (relative) from the outline it stands for, unless
+  // it already did: sliding and collapsing never cut across the outline's corners. Default 0.05.
+  double chordTolerance = 0.05;
+};
+
+// Operations applied and seconds spent, summed over calls.
+struct RemeshCounts {
+  int flips = 0, splits = 0, collapses = 0;
+  double flipSeconds = 0, splitSeconds = 0, collapseSeconds = 0;
+};
+
+class Remesher {
+ public:
+  // Takes the relative length unit of every key from `mesh` as it is now.
+  Remesher(ComeshMesh& mesh, const RemeshOptions& options);
+
+  // Key k's unit of relative length: its mean edge length at construction (px).
+  double unitLength(int k) const { return unit_[k]; }
+  // How far boundary edge (a, b), a before b on the walk, strays from key k's outline (px).
+  double chordDeviation(int k, int a, int b) const;
+
+  // One pass over the edges each; return how many operations were applied.
+  // Flip: an interior edge whose flip lowers the largest angle of its two triangles over all keys.
+  int flipEdges(RemeshCounts& counts);
+  // Split at the midpoint (on the outline for boundary edges; a cut edge and its partner together):
+  // an edge too long in every key, when no new angle is below collapseAngle and the largest angle
+  // does not grow.
+  int splitEdges(RemeshCounts& counts);
+  // Collapse a vertex onto a neighbour (a boundary vertex that slides in every key only along the
+  // boundary): the edge too short, or opposite a too small angle, in every key, when the smallest
+  // angle around does not get smaller.
+  int collapseEdges(RemeshCounts& counts);
+
+ private:
+  bool flipImproves(int a, int b, int c, int d) const;
+  bool trySplit(int a, int b);
+  bool tryCollapse(int from, int to);
+  bool collapsible(int from, int to) const;
+  bool collapseCandidate(int a, int b) const;
+  double relativeLength(int k, int a, int b) const;
+  // Where a new vertex at the middle of boundary edge (a, b) goes in every key (a before b on the walk).
+  std::vector<Eigen::Vector2d> boundaryMidpoint(int a, int b, Eigen::RowVectorXd& u) const;
+
+  ComeshMesh& mesh_;
+  RemeshOptions options_;
+  std::vector<double> unit_;  // [key]: mean edge length at construction
+};
+
+}  // namespace ib

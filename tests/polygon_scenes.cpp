@@ -1,0 +1,99 @@
+// The Comesh Optimization scenes of the paper's Figures 4, 10 and 18, drawn as polygons: pentagon
+// to star (regular and thin-spoked), hexagon to a thin six-spoked star, square to hexagon.
+#include "example_scenes.h"
+
+#include "drawings.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace test {
+
+namespace {
+
+constexpr int kSize = 128;  // px
+constexpr double kPi = 3.14159265358979323846;
+
+using Polygon = std::vector<std::array<double, 2>>;
+
+// Inside test by crossings of a ray towards +x.
+Inside polygon(Polygon corners) {
+  return [corners = std::move(corners)](double x, double y) {
+    bool inside = false;
+    for (size_t i = 0, j = corners.size() - 1; i < corners.size(); j = i++) {
+      const auto& a = corners[i];
+      const auto& b = corners[j];
+      if ((a[1] > y) != (b[1] > y) && x < a[0] + (y - a[1]) / (b[1] - a[1]) * (b[0] - a[0])) inside = !inside;
+    }
+    return inside;
+  };
+}
+
+// A regular polygon with `count` corners about (64, 64), the first at angle `start` (degrees,
+// y down), alternating between radius `outer` and `inner` when `inner` > 0 (a star with count/2 tips).
+Polygon regular(int count, double outer, double inner, double start) {
+  Polygon out;
+  for (int i = 0; i < count; ++i) {
+    const double r = (inner > 0 && i % 2 == 1) ? inner : outer, a = (start + 360.0 * i / count) * kPi / 180;
+    out.push_back({64 + r * std::cos(a), 64 + r * std::sin(a)});
+  }
+  return out;
+}
+
+std::string point(const std::array<double, 2>& p) {
+  std::ostringstream out;
+  out.precision(6);
+  out << "[" << p[0] << ", " << p[1] << "]";
+  return out.str();
+}
+
+// A two-key scene: features "f0", "f1", ... at the given points of each key.
+ExampleScene twoKeys(const std::string& name, const std::string& first, const Polygon& firstShape,
+                     const Polygon& firstFeatures, const std::string& second, const Polygon& secondShape,
+                     const Polygon& secondFeatures) {
+  auto features = [](const Polygon& at) {
+    std::string out;
+    for (size_t i = 0; i < at.size(); ++i) out += (i ? ", " : "") + ("\"f" + std::to_string(i) + "\": ") + point(at[i]);
+    return out;
+  };
+  const std::string json = R"({
+  "version": 1,
+  "reference": ")" + first + R"(",
+  "edge_length": 6,
+  "keys": [
+    {"name": ")" + first + R"(", "drawing": ")" + first + R"(.png", "features": {)" + features(firstFeatures) + R"(}},
+    {"name": ")" + second + R"(", "drawing": ")" + second + R"(.png", "features": {)" + features(secondFeatures) + R"(}}
+  ]
+})";
+  return {name, json,
+          {{first + ".png", drawShape(kSize, kSize, polygon(firstShape))},
+           {second + ".png", drawShape(kSize, kSize, polygon(secondShape))}}};
+}
+
+// Every `step`-th corner of a polygon.
+Polygon corners(const Polygon& shape, int step) {
+  Polygon out;
+  for (size_t i = 0; i < shape.size(); i += step) out.push_back(shape[i]);
+  return out;
+}
+
+ExampleScene star(const std::string& name, int tips, double polygonRadius, double inner) {
+  const Polygon base = regular(tips, polygonRadius, 0, -90), spiky = regular(2 * tips, 56, inner, -90);
+  return twoKeys(name, "polygon", base, base, "star", spiky, corners(spiky, 2));
+}
+
+ExampleScene squareHexagon() {
+  const Polygon square = {{28, 28}, {100, 28}, {100, 100}, {28, 100}}, hexagon = regular(6, 48, 0, 0);
+  const Polygon squareFeatures = {{100, 64}, {64, 100}, {28, 64}, {64, 28}};
+  const Polygon hexagonFeatures = {hexagon[0], {64, 64 + 48 * std::sqrt(0.75)}, hexagon[3], {64, 64 - 48 * std::sqrt(0.75)}};
+  return twoKeys("square-hexagon", "square", square, squareFeatures, "hexagon", hexagon, hexagonFeatures);
+}
+
+}  // namespace
+
+std::vector<ExampleScene> comeshScenes() {
+  return {star("pentagon-star", 5, 44, 24), star("pentagon-star-thin", 5, 44, 13), star("hexagon-star-thin", 6, 44, 14),
+          squareHexagon()};
+}
+
+}  // namespace test
