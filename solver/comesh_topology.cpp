@@ -8,25 +8,27 @@ namespace ib {
 
 namespace {
 
-constexpr double kDegrees = 180.0 / 3.14159265358979323846;
-
+// The smallest and largest angle of some triangles, as cosines (a cosine falls as its angle grows).
 struct AngleRange {
-  double smallest = 180, largest = 0;  // degrees
+  double smallest = -1;  // cosine of the smallest angle: the largest cosine seen
+  double largest = 1;    // cosine of the largest angle: the smallest cosine seen
   void add(const AngleRange& other) {
-    smallest = std::min(smallest, other.smallest);
-    largest = std::max(largest, other.largest);
+    smallest = std::max(smallest, other.smallest);
+    largest = std::min(largest, other.largest);
   }
+  bool degenerate() const { return smallest >= 1; }
 };
 
-// Angles of triangle (p0, p1, p2), degrees; a triangle that is not positive counts as 0 and 180.
+// Angles of triangle (p0, p1, p2); a triangle that is not positive counts as angles 0 and 180.
 AngleRange angles(const Eigen::Vector2d& p0, const Eigen::Vector2d& p1, const Eigen::Vector2d& p2) {
+  if (!(signedArea(p0, p1, p2) > 0)) return {1, -1};
   const Eigen::Vector2d e[3] = {p1 - p0, p2 - p1, p0 - p2};
-  if (!(signedArea(p0, p1, p2) > 0)) return {0, 180};
   AngleRange range;
   for (int i = 0; i < 3; ++i) {
-    const Eigen::Vector2d from = -e[(i + 2) % 3], to = e[i];
-    const double a = std::atan2(std::abs(from.x() * to.y() - from.y() * to.x()), from.dot(to)) * kDegrees;
-    range.add({a, a});
+    const Eigen::Vector2d& to = e[i];
+    const Eigen::Vector2d from = -e[(i + 2) % 3];
+    const double c = from.dot(to) / std::sqrt(from.squaredNorm() * to.squaredNorm());
+    range.add({c, c});
   }
   return range;
 }
@@ -87,7 +89,8 @@ void splitTriangles(const ComeshMesh& mesh, int a, int b, int v, std::vector<Tri
 
 }  // namespace
 
-Remesher::Remesher(ComeshMesh& mesh, const RemeshOptions& options) : mesh_(mesh), options_(options) {
+Remesher::Remesher(ComeshMesh& mesh, const RemeshOptions& options)
+    : mesh_(mesh), options_(options), cosCollapse_(std::cos(options.collapseAngle * 3.14159265358979323846 / 180)) {
   for (int k = 0; k < mesh.keyCount(); ++k) {
     double sum = 0;
     for (const Triangle& t : mesh.triangles)
@@ -111,7 +114,7 @@ bool Remesher::flipImproves(int a, int b, int c, int d) const {
   const std::vector<Eigen::Vector2d> none;
   const AngleRange before = keyAngles(mesh_, {{a, b, c}, {b, a, d}}, -1, none);
   const AngleRange after = keyAngles(mesh_, {{c, a, d}, {d, b, c}}, -1, none);
-  return after.smallest > 0 && after.largest < before.largest - 1e-6;
+  return !after.degenerate() && after.largest > before.largest + 1e-12;
 }
 
 int Remesher::flipEdges(RemeshCounts& counts) {
@@ -184,7 +187,7 @@ bool Remesher::trySplit(int a, int b) {
     if (boundary && mesh_.onBoundary(t[2])) return false;
   const std::vector<Eigen::Vector2d> none;
   const AngleRange old = keyAngles(mesh_, before, -1, none), fresh = keyAngles(mesh_, after, v, position);
-  if (fresh.smallest < options_.collapseAngle || fresh.largest > old.largest) return false;
+  if (fresh.smallest > cosCollapse_ || fresh.largest < old.largest) return false;
   // A cut side splits with its partner, the new vertices collocated where the cut is closed.
   const std::array<int, 2> partner = boundary ? mesh_.cutPartner(a, b) : std::array<int, 2>{-1, -1};
   std::vector<Eigen::Vector2d> partnerPosition;
@@ -200,7 +203,7 @@ bool Remesher::trySplit(int a, int b) {
     splitTriangles(mesh_, partner[0], partner[1], v, pb, pa);
     if (mesh_.onBoundary(pb.at(0)[2])) return false;
     const AngleRange po = keyAngles(mesh_, pb, -1, none), pf = keyAngles(mesh_, pa, v, partnerPosition);
-    if (pf.smallest < options_.collapseAngle || pf.largest > po.largest) return false;
+    if (pf.smallest > cosCollapse_ || pf.largest < po.largest) return false;
   }
   auto insert = [&](int p, int q, const std::vector<Eigen::Vector2d>& at, const Eigen::RowVectorXd& params) {
     const int w = mesh_.addVertex(at);
@@ -225,15 +228,15 @@ bool Remesher::collapseCandidate(int a, int b) const {
   const int t1 = mesh_.triangleWith(a, b), t2 = mesh_.triangleWith(b, a);
   for (int k = 0; k < mesh_.keyCount(); ++k) {
     shortEverywhere = shortEverywhere && relativeLength(k, a, b) < options_.collapseLength;
-    double opposite = 180;
+    double opposite = -1;  // cosine of the smaller opposite angle
     for (const auto& [t, p, q] : {std::tuple{t1, a, b}, std::tuple{t2, b, a}}) {
       if (t < 0) continue;
       const int c = mesh_.thirdCorner(t, p, q);
       const Eigen::Vector2d pc = mesh_.keys[k].row(c).transpose();
       const Eigen::Vector2d e1 = mesh_.keys[k].row(p).transpose() - pc, e2 = mesh_.keys[k].row(q).transpose() - pc;
-      opposite = std::min(opposite, std::atan2(std::abs(e1.x() * e2.y() - e1.y() * e2.x()), e1.dot(e2)) * kDegrees);
+      opposite = std::max(opposite, e1.dot(e2) / std::sqrt(e1.squaredNorm() * e2.squaredNorm()));
     }
-    thinEverywhere = thinEverywhere && opposite < options_.collapseAngle;
+    thinEverywhere = thinEverywhere && opposite > cosCollapse_;
   }
   return shortEverywhere || thinEverywhere;
 }
@@ -298,7 +301,7 @@ bool Remesher::tryCollapse(int from, int to) {
   }
   const std::vector<Eigen::Vector2d> none;
   const AngleRange old = keyAngles(mesh_, before, -1, none), fresh = keyAngles(mesh_, after, -1, none);
-  if (!(fresh.smallest > 0) || fresh.smallest < old.smallest) return false;
+  if (fresh.degenerate() || fresh.smallest > old.smallest) return false;
   mesh_.collapse(from, to);
   return true;
 }

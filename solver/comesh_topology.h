@@ -59,6 +59,7 @@ class Remesher {
 
   ComeshMesh& mesh_;
   RemeshOptions options_;
+  double cosCollapse_;        // cosine of options_.collapseAngle
   std::vector<double> unit_;  // [key]: mean edge length at construction
 };
 

@@ -25,6 +25,9 @@ std::vector<ExampleScene> goodScenes();
 // five and six tips, square to hexagon. Features pin the polygon's corners to the star's tips.
 std::vector<ExampleScene> comeshScenes();
 
+// Three keys: pentagon, star and a thinner star, for the order of keys in the cyclic MIPS sum.
+ExampleScene threeStars();
+
 // Writes FOLDER/NAME/scene.json and its drawings.
 void writeScene(const ExampleScene& scene, const std::string& folder);
 

@@ -11,14 +11,19 @@ namespace test {
 
 namespace {
 
-constexpr int kSize = 128;  // px
+// Shapes are designed on a 128 px canvas and drawn at twice that, so that tracing keeps their
+// symmetry to a fraction of a percent of their size.
+constexpr int kSize = 128;     // design canvas
+constexpr double kScale = 2;   // drawing px per design unit
+constexpr int kDrawing = 256;  // px: kScale * kSize
 constexpr double kPi = 3.14159265358979323846;
 
 using Polygon = std::vector<std::array<double, 2>>;
 
-// Inside test by crossings of a ray towards +x.
+// Inside test by crossings of a ray towards +x, in drawing pixels.
 Inside polygon(Polygon corners) {
-  return [corners = std::move(corners)](double x, double y) {
+  return [corners = std::move(corners)](double px, double py) {
+    const double x = px / kScale, y = py / kScale;
     bool inside = false;
     for (size_t i = 0, j = corners.size() - 1; i < corners.size(); j = i++) {
       const auto& a = corners[i];
@@ -43,7 +48,7 @@ Polygon regular(int count, double outer, double inner, double start) {
 std::string point(const std::array<double, 2>& p) {
   std::ostringstream out;
   out.precision(6);
-  out << "[" << p[0] << ", " << p[1] << "]";
+  out << "[" << kScale * p[0] << ", " << kScale * p[1] << "]";
   return out.str();
 }
 
@@ -59,15 +64,15 @@ ExampleScene twoKeys(const std::string& name, const std::string& first, const Po
   const std::string json = R"({
   "version": 1,
   "reference": ")" + first + R"(",
-  "edge_length": 6,
+  "edge_length": 12,
   "keys": [
     {"name": ")" + first + R"(", "drawing": ")" + first + R"(.png", "features": {)" + features(firstFeatures) + R"(}},
     {"name": ")" + second + R"(", "drawing": ")" + second + R"(.png", "features": {)" + features(secondFeatures) + R"(}}
   ]
 })";
   return {name, json,
-          {{first + ".png", drawShape(kSize, kSize, polygon(firstShape))},
-           {second + ".png", drawShape(kSize, kSize, polygon(secondShape))}}};
+          {{first + ".png", drawShape(kDrawing, kDrawing, polygon(firstShape))},
+           {second + ".png", drawShape(kDrawing, kDrawing, polygon(secondShape))}}};
 }
 
 // Every `step`-th corner of a polygon.
@@ -90,6 +95,19 @@ ExampleScene squareHexagon() {
 }
 
 }  // namespace
+
+ExampleScene threeStars() {
+  const Polygon base = regular(5, 44, 0, -90), star = regular(10, 56, 24, -90), thin = regular(10, 56, 16, -90);
+  ExampleScene out = twoKeys("three-stars", "polygon", base, base, "star", star, corners(star, 2));
+  const std::string thinFeatures = R"(    {"name": "thin", "drawing": "thin.png", "features": {)";
+  std::string features;
+  const Polygon tips = corners(thin, 2);
+  for (size_t i = 0; i < tips.size(); ++i) features += (i ? ", " : "") + ("\"f" + std::to_string(i) + "\": ") + point(tips[i]);
+  const size_t end = out.json.rfind("\n  ]");
+  out.json.insert(end, ",\n" + thinFeatures + features + "}}");
+  out.drawings.push_back({"thin.png", drawShape(kDrawing, kDrawing, polygon(thin))});
+  return out;
+}
 
 std::vector<ExampleScene> comeshScenes() {
   return {star("pentagon-star", 5, 44, 24), star("pentagon-star-thin", 5, 44, 13), star("hexagon-star-thin", 6, 44, 14),

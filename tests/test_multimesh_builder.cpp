@@ -3,6 +3,7 @@
 #include "drawings.h"
 #include "multimesh_builder.h"
 #include "plane_geometry.h"
+#include "shape_checks.h"
 
 #include <catch2/catch.hpp>
 #include <filesystem>
@@ -36,25 +37,6 @@ const BuiltScene& builtScene(const std::string& name) {
   for (const auto& [key, entry] : builtScenes())
     if (key.rfind(name + "@", 0) == 0) return entry.second;
   throw std::logic_error("no example scene " + name);
-}
-
-// Distance from p to the nearest segment of the key's loops (outlines and cut sides).
-double distanceToShape(const KeyShape& shape, const Eigen::Vector2d& p) {
-  double best = std::numeric_limits<double>::infinity();
-  for (const ShapeLoop& loop : shape.loops)
-    for (size_t i = 0, n = loop.points.size(); i < n; ++i) {
-      const Eigen::Vector2d& a = loop.points[i];
-      const Eigen::Vector2d& b = loop.points[(i + 1) % n];
-      best = std::min(best, (a + closestParameter(a, b, p) * (b - a) - p).norm());
-    }
-  return best;
-}
-
-std::vector<int> meshBoundary(const Multimesh& mesh) {
-  std::vector<int> out;
-  for (auto v : mesh.topology().vertices())
-    if (mesh.topology().is_boundary(v)) out.push_back(v.idx());
-  return out;
 }
 
 }  // namespace
@@ -96,12 +78,12 @@ TEST_CASE("multimesh builder: boundary vertices lie on their key's outline withi
   for (const auto& [name, entry] : builtScenes()) {
     INFO("scene " << name);
     const Multimesh& mesh = *entry.second.multimesh;
-    const std::vector<int> boundary = meshBoundary(mesh);
+    const std::vector<int> boundary = test::meshBoundary(mesh);
     for (int k = 0; k < mesh.keyCount(); ++k) {
       INFO("key " << entry.first.keys[k].name);
       const Eigen::MatrixX2d x = mesh.keyPositions(k);
       double worst = 0;
-      for (int v : boundary) worst = std::max(worst, distanceToShape(entry.second.shapes[k], x.row(v)));
+      for (int v : boundary) worst = std::max(worst, test::distanceToShape(entry.second.shapes[k], x.row(v)));
       CHECK(worst <= 0.5);
     }
   }
@@ -122,7 +104,7 @@ TEST_CASE("multimesh builder: features sit where they were placed, snapped to th
         INFO("key " << entry.first.keys[k].name << ", feature " << feature);
         double nearest = std::numeric_limits<double>::infinity();
         for (int v = 0; v < mesh.vertexCount(); ++v) nearest = std::min(nearest, (x.row(v).transpose() - placed).norm());
-        CHECK(nearest <= distanceToShape(traced, placed) + 1e-6);  // a vertex at the nearest outline point
+        CHECK(nearest <= test::distanceToShape(traced, placed) + 1e-6);  // a vertex at the nearest outline point
         CHECK(nearest <= 1.0);  // and the scenes place their features on the drawn edge
       }
     }

@@ -1,0 +1,25 @@
+// Geometric checks shared by the multimesh and Comesh tests.
+#pragma once
+
+#include "key_shape.h"
+#include "multimesh.h"
+
+#include <Eigen/Core>
+#include <vector>
+
+namespace test {
+
+// Distance from p to the nearest segment of the key's loops (outlines and cut sides), px.
+double distanceToShape(const ib::KeyShape& shape, const Eigen::Vector2d& p);
+
+// Vertices on the mesh boundary.
+std::vector<int> meshBoundary(const ib::Multimesh& mesh);
+
+// The mesh boundary at positions x (n x 2) as segments (pairs of vertex indices).
+std::vector<std::array<int, 2>> boundaryEdges(const ib::Multimesh& mesh);
+
+// Distance from p to the nearest boundary segment of the mesh at positions x.
+double distanceToBoundary(const std::vector<std::array<int, 2>>& edges, const Eigen::MatrixX2d& x,
+                          const Eigen::Vector2d& p);
+
+}  // namespace test
