@@ -1,6 +1,7 @@
 #include "comesh.h"
 
 #include "comesh_energy.h"
+#include "comesh_preconditioner.h"
 
 #include <Eigen/Dense>
 #include <chrono>
@@ -16,8 +17,9 @@ class VertexStepper {
   struct Bounds {
     double minimumGap, maximumGap, chordTolerance;  // px
   };
-  VertexStepper(ComeshMesh& mesh, int key, double odtWeight, const Bounds& bounds)
-      : mesh_(mesh), key_(key), odtWeight_(odtWeight), minimumGap_(bounds.minimumGap), maximumGap_(bounds.maximumGap),
+  VertexStepper(ComeshMesh& mesh, SobolevPreconditioner& preconditioner, int key, double odtWeight,
+                const Bounds& bounds)
+      : mesh_(mesh), preconditioner_(preconditioner), key_(key), odtWeight_(odtWeight), minimumGap_(bounds.minimumGap), maximumGap_(bounds.maximumGap),
         chordTolerance_(bounds.chordTolerance) {}
 
   // Returns the relative energy decrease (0 when no step lowered the energy). `stepSize` carries
@@ -26,15 +28,15 @@ class VertexStepper {
     Eigen::MatrixX2d gradient;
     const double before = comeshBlockEnergy(mesh_.triangles, mesh_.keys, key_, &gradient, odtWeight_);
     const int n = mesh_.vertexCount();
-    direction_.setZero(n, 2);
+    preconditioner_.update(mesh_, mesh_.topologyVersion);
+    preconditioner_.apply(mesh_, gradient, direction_);
     slide_.setZero(n);
     for (int v = 0; v < n; ++v) {
-      if (mesh_.fixed[v] || mesh_.around[v].empty()) continue;
-      if (!mesh_.onBoundary(v)) {
-        direction_.row(v) = -gradient.row(v);
-      } else if (mesh_.slides(v, key_)) {
-        const Eigen::Vector2d t = tangent(v);
-        slide_[v] = -gradient.row(v).dot(t.transpose()) / t.squaredNorm();
+      if (mesh_.fixed[v] || mesh_.around[v].empty()) {
+        direction_.row(v).setZero();
+      } else if (mesh_.onBoundary(v)) {  // along the outline only, or not at all
+        const Eigen::Vector2d t = mesh_.slides(v, key_) ? tangent(v) : Eigen::Vector2d::Zero();
+        slide_[v] = t.isZero() ? 0.0 : direction_.row(v).dot(t.transpose()) / t.squaredNorm();
         direction_.row(v) = slide_[v] * t.transpose();
       }
     }
@@ -137,6 +139,7 @@ class VertexStepper {
   }
 
   ComeshMesh& mesh_;
+  SobolevPreconditioner& preconditioner_;
   int key_;
   double odtWeight_;
   double minimumGap_, maximumGap_;  // px
@@ -166,6 +169,7 @@ Multimesh comeshOptimize(const Multimesh& input, const ComeshBoundary* boundary,
   const auto started = std::chrono::steady_clock::now();
   ComeshMesh mesh(input, boundary);
   Remesher remesher(mesh, options.bounds);
+  SobolevPreconditioner preconditioner;
   const std::vector<double> odtWeights = balancedOdtWeights(mesh, remesher, options.odtBalance);
   const int m = mesh.keyCount();
   std::vector<double> stepSize(m, 0.0);
@@ -180,7 +184,7 @@ Multimesh comeshOptimize(const Multimesh& input, const ComeshBoundary* boundary,
     double total = 0;
     for (int i = 0; i < m; ++i) {
       const double unit = remesher.unitLength(i);
-      VertexStepper stepper(mesh, i, odtWeights[i],
+      VertexStepper stepper(mesh, preconditioner, i, odtWeights[i],
                             {options.bounds.collapseLength * unit, options.bounds.splitLength * unit,
                              options.bounds.chordTolerance * unit});
       double innerResidual = 0;

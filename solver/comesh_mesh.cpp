@@ -82,6 +82,7 @@ void ComeshMesh::setTriangle(int t, const Triangle& corners) {
 }
 
 void ComeshMesh::flip(int a, int b) {
+  ++topologyVersion;
   const int t1 = triangleWith(a, b), t2 = triangleWith(b, a);
   const int c = thirdCorner(t1, a, b), d = thirdCorner(t2, b, a);
   const double k = 0.5 * (kappa[t1] + kappa[t2]);
@@ -91,6 +92,7 @@ void ComeshMesh::flip(int a, int b) {
 }
 
 void ComeshMesh::split(int a, int b, int v) {
+  ++topologyVersion;
   for (const auto& [p, q] : {std::pair{a, b}, std::pair{b, a}}) {
     const int t = triangleWith(p, q);
     if (t < 0) continue;
@@ -125,6 +127,7 @@ void ComeshMesh::splitPairs(int a, int b, int v, int c, int d, int w) {
 }
 
 void ComeshMesh::collapse(int from, int to) {
+  ++topologyVersion;
   if (next[from] == to) {
     previous[to] = previous[from];
     next[previous[from]] = to;

@@ -76,6 +76,7 @@ struct ComeshMesh {
   std::vector<std::vector<CohesivePair>> cohesive;  // [key]: C_i
   std::vector<std::vector<char>> outline;           // [key][vertex]: in B_i
   std::vector<char> fixed;                    // [vertex]: never moves (all boundary vertices without `boundary`)
+  long topologyVersion = 0;                   // counts flips, splits and collapses
 
  private:
   void setTriangle(int t, const Triangle& corners);

@@ -120,11 +120,27 @@ bool Remesher::flipImproves(int a, int b, int c, int d) const {
 int Remesher::flipEdges(RemeshCounts& counts) {
   Timer timer(counts.flipSeconds);
   int flips = 0;
-  for (size_t t = 0; t < mesh_.triangles.size(); ++t)
+  for (size_t t = 0; t < mesh_.triangles.size(); ++t) {
+    // A flip keeps the whole angles at the edge's ends, so it can only lower the largest angle when
+    // that angle faces the edge: only edges that are a triangle's longest in some key are candidates.
+    const Triangle tri = mesh_.triangles[t];
+    std::array<bool, 3> candidate{false, false, false};
+    for (int k = 0; k < mesh_.keyCount(); ++k) {
+      const auto& x = mesh_.keys[k];
+      int longest = 0;
+      double length = -1;
+      for (int i = 0; i < 3; ++i) {
+        const double l = (x.row(tri[(i + 1) % 3]) - x.row(tri[i])).squaredNorm();
+        if (l > length) {
+          length = l;
+          longest = i;
+        }
+      }
+      candidate[longest] = true;
+    }
     for (int i = 0; i < 3; ++i) {
-      const Triangle tri = mesh_.triangles[t];
+      if (!candidate[i]) continue;
       const int a = tri[i], b = tri[(i + 1) % 3];
-      if (a < 0 || a > b) continue;
       const int twin = mesh_.triangleWith(b, a);
       if (twin < 0) continue;  // boundary (and so every cohesive) edge
       const int c = tri[(i + 2) % 3], d = mesh_.thirdCorner(twin, b, a);
@@ -132,7 +148,9 @@ int Remesher::flipEdges(RemeshCounts& counts) {
       if (!flipImproves(a, b, c, d)) continue;
       mesh_.flip(a, b);
       ++flips;
+      break;  // this triangle is now another one
     }
+  }
   counts.flips += flips;
   return flips;
 }
@@ -158,11 +176,12 @@ int Remesher::splitEdges(RemeshCounts& counts) {
     for (int i = 0; i < 3; ++i) {
       const Triangle tri = mesh_.triangles[t];
       const int a = tri[i], b = tri[(i + 1) % 3];
-      if (a < 0 || (a > b && mesh_.triangleWith(b, a) >= 0)) continue;
+      if (a < 0) continue;
       bool longEverywhere = true;
       for (int k = 0; k < mesh_.keyCount() && longEverywhere; ++k)
         longEverywhere = relativeLength(k, a, b) > options_.splitLength;
-      if (longEverywhere && trySplit(a, b)) ++splits;
+      if (!longEverywhere || (a > b && mesh_.triangleWith(b, a) >= 0)) continue;  // inside edges once
+      if (trySplit(a, b)) ++splits;
     }
   counts.splits += splits;
   return splits;
@@ -223,20 +242,13 @@ bool Remesher::trySplit(int a, int b) {
   return true;
 }
 
-bool Remesher::collapseCandidate(int a, int b) const {
+bool Remesher::collapseCandidate(int a, int b, int c) const {
   bool shortEverywhere = true, thinEverywhere = true;
-  const int t1 = mesh_.triangleWith(a, b), t2 = mesh_.triangleWith(b, a);
-  for (int k = 0; k < mesh_.keyCount(); ++k) {
+  for (int k = 0; k < mesh_.keyCount() && (shortEverywhere || thinEverywhere); ++k) {
+    const auto& x = mesh_.keys[k];
     shortEverywhere = shortEverywhere && relativeLength(k, a, b) < options_.collapseLength;
-    double opposite = -1;  // cosine of the smaller opposite angle
-    for (const auto& [t, p, q] : {std::tuple{t1, a, b}, std::tuple{t2, b, a}}) {
-      if (t < 0) continue;
-      const int c = mesh_.thirdCorner(t, p, q);
-      const Eigen::Vector2d pc = mesh_.keys[k].row(c).transpose();
-      const Eigen::Vector2d e1 = mesh_.keys[k].row(p).transpose() - pc, e2 = mesh_.keys[k].row(q).transpose() - pc;
-      opposite = std::max(opposite, e1.dot(e2) / std::sqrt(e1.squaredNorm() * e2.squaredNorm()));
-    }
-    thinEverywhere = thinEverywhere && opposite > cosCollapse_;
+    const Eigen::Vector2d e1 = (x.row(a) - x.row(c)).transpose(), e2 = (x.row(b) - x.row(c)).transpose();
+    thinEverywhere = thinEverywhere && e1.dot(e2) / std::sqrt(e1.squaredNorm() * e2.squaredNorm()) > cosCollapse_;
   }
   return shortEverywhere || thinEverywhere;
 }
@@ -248,7 +260,7 @@ int Remesher::collapseEdges(RemeshCounts& counts) {
     for (int i = 0; i < 3; ++i) {
       const Triangle tri = mesh_.triangles[t];
       const int a = tri[i], b = tri[(i + 1) % 3];
-      if (a < 0 || (a > b && mesh_.triangleWith(b, a) >= 0) || !collapseCandidate(a, b)) continue;
+      if (a < 0 || !collapseCandidate(a, b, tri[(i + 2) % 3])) continue;
       if (tryCollapse(a, b) || tryCollapse(b, a)) ++collapses;
     }
   mesh_.compact();

@@ -43,8 +43,8 @@ class Remesher {
   // does not grow.
   int splitEdges(RemeshCounts& counts);
   // Collapse a vertex onto a neighbour (a boundary vertex that slides in every key only along the
-  // boundary): the edge too short, or opposite a too small angle, in every key, when the smallest
-  // angle around does not get smaller.
+  // boundary): the edge too short in every key, or one angle opposite it too small in every key,
+  // when the smallest angle around does not get smaller.
   int collapseEdges(RemeshCounts& counts);
 
  private:
@@ -52,7 +52,8 @@ class Remesher {
   bool trySplit(int a, int b);
   bool tryCollapse(int from, int to);
   bool collapsible(int from, int to) const;
-  bool collapseCandidate(int a, int b) const;
+  // Edge (a, b) of a triangle with third corner c: too short, or the angle at c too small, in every key.
+  bool collapseCandidate(int a, int b, int c) const;
   double relativeLength(int k, int a, int b) const;
   // Where a new vertex at the middle of boundary edge (a, b) goes in every key (a before b on the walk).
   std::vector<Eigen::Vector2d> boundaryMidpoint(int a, int b, Eigen::RowVectorXd& u) const;

@@ -1,0 +1,52 @@
+#include "comesh_preconditioner.h"
+
+#include <stdexcept>
+
+namespace ib {
+
+void SobolevPreconditioner::update(const ComeshMesh& mesh, long topologyVersion) {
+  if (topologyVersion == version_) return;
+  version_ = topologyVersion;
+  const int n = mesh.vertexCount();
+  unknown_.assign(n, -1);
+  valence_.assign(n, 0);
+  int count = 0;
+  for (int v = 0; v < n; ++v)
+    if (!mesh.onBoundary(v) && !mesh.fixed[v] && !mesh.around[v].empty()) unknown_[v] = count++;
+  std::vector<Eigen::Triplet<double>> entries;
+  for (int v = 0; v < count; ++v) entries.emplace_back(v, v, 1.0);
+  for (const Triangle& t : mesh.triangles)
+    for (int i = 0; i < 3; ++i) {
+      const int a = t[i], b = t[(i + 1) % 3];
+      ++valence_[a];  // each edge seen from both triangles inside: half a count each way
+      ++valence_[b];
+      if (unknown_[a] >= 0) entries.emplace_back(unknown_[a], unknown_[a], 0.5);
+      if (unknown_[b] >= 0) entries.emplace_back(unknown_[b], unknown_[b], 0.5);
+      if (unknown_[a] >= 0 && unknown_[b] >= 0) {
+        entries.emplace_back(unknown_[a], unknown_[b], -0.5);
+        entries.emplace_back(unknown_[b], unknown_[a], -0.5);
+      }
+    }
+  for (int& v : valence_) v /= 2;
+  Eigen::SparseMatrix<double> matrix(count, count);
+  matrix.setFromTriplets(entries.begin(), entries.end());
+  factor_.compute(matrix);
+  if (factor_.info() != Eigen::Success) throw std::runtime_error("Comesh preconditioner: factorization failed");
+}
+
+void SobolevPreconditioner::apply(const ComeshMesh& mesh, const Eigen::MatrixX2d& gradient,
+                                  Eigen::MatrixX2d& direction) const {
+  const int n = mesh.vertexCount();
+  direction.setZero(n, 2);
+  Eigen::MatrixX2d rhs(factor_.rows(), 2);
+  for (int v = 0; v < n; ++v) {
+    if (unknown_[v] >= 0) rhs.row(unknown_[v]) = gradient.row(v);
+    else direction.row(v) = -gradient.row(v) / (valence_[v] + 1);
+  }
+  if (rhs.rows() == 0) return;
+  const Eigen::MatrixX2d solved = factor_.solve(rhs);
+  for (int v = 0; v < n; ++v)
+    if (unknown_[v] >= 0) direction.row(v) = -solved.row(unknown_[v]);
+}
+
+}  // namespace ib

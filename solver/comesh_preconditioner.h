@@ -1,0 +1,32 @@
+// A Sobolev preconditioner for Comesh Optimization's gradient steps: descent directions
+// d = -(L + I)^-1 g on the interior vertices, L the graph Laplacian of the shared topology with the
+// boundary held (Dirichlet). Plain gradient descent on MIPS and ODT moves the mesh's smooth,
+// mesh-wide modes very slowly; through L^-1 they move at the pace of the local ones. L depends on
+// topology only, so it is shared by every key and refactorized only after flips, splits or collapses.
+#pragma once
+
+#include "comesh_mesh.h"
+
+#include <Eigen/Core>
+#include <Eigen/SparseCholesky>
+#include <vector>
+
+namespace ib {
+
+class SobolevPreconditioner {
+ public:
+  // Rebuilds L for `mesh` when its topology changed since the last call (by `topologyVersion`).
+  void update(const ComeshMesh& mesh, long topologyVersion);
+
+  // direction (n x 2) = -(L + I)^-1 gradient on interior vertices, -gradient / (valence + 1) on
+  // the others (the local scale of the same operator).
+  void apply(const ComeshMesh& mesh, const Eigen::MatrixX2d& gradient, Eigen::MatrixX2d& direction) const;
+
+ private:
+  long version_ = -1;
+  std::vector<int> unknown_;  // [vertex]: row in L, or -1 (boundary, fixed, or without triangles)
+  std::vector<int> valence_;  // [vertex]
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> factor_;
+};
+
+}  // namespace ib
