@@ -47,27 +47,6 @@ double millisecondsSince(Clock::time_point t) {
   return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
 }
 
-std::vector<int> parseList(const std::string& text, const std::string& option, int min, int max) {
-  std::vector<int> out;
-  std::stringstream in(text);
-  std::string item;
-  while (std::getline(in, item, ',')) {
-    int factor = 1;
-    if (!item.empty() && (item.back() == 'k' || item.back() == 'K')) {
-      factor = 1000;
-      item.pop_back();
-    }
-    char* end = nullptr;
-    const long v = std::strtol(item.c_str(), &end, 10) * factor;
-    if (item.empty() || *end != '\0' || v < min || v > max)
-      throw InputError("bench: --" + option + " entry '" + item + "' must be in [" + std::to_string(min) + ", " +
-                       std::to_string(max) + "]");
-    out.push_back(static_cast<int>(v));
-  }
-  if (out.empty()) throw InputError("bench: --" + option + " is empty");
-  return out;
-}
-
 // The sweep's weights at s in [0, 1]: two keys go 0 -> 1; more keys blend n-way with every
 // weight w_i(s) ~ 1 + cos(2 pi (s - i/m)), all positive most of the time.
 Eigen::VectorXd sweepWeights(int keys, double s) {
@@ -201,7 +180,8 @@ int runBench(const std::vector<std::string>& args) {
     std::fputs(kBenchUsage, args.empty() ? stderr : stdout);
     return args.empty() ? 2 : 0;
   }
-  if (args[0] != "interp") throw InputError("bench: unknown case '" + args[0] + "' (available: interp)");
+  if (args[0] == "comesh") return runBenchComesh(std::vector<std::string>(args.begin() + 1, args.end()));
+  if (args[0] != "interp") throw InputError("bench: unknown case '" + args[0] + "' (available: interp, comesh)");
   const cli::Arguments a("bench", std::vector<std::string>(args.begin() + 1, args.end()),
                          {"sizes", "keys", "frames", "repeats", "threads"}, {"no-baseline", "help"});
   if (a.flag("help")) {
@@ -209,8 +189,8 @@ int runBench(const std::vector<std::string>& args) {
     return 0;
   }
   if (!a.positional().empty()) throw InputError("bench: unexpected argument '" + a.positional()[0] + "'");
-  const std::vector<int> sizes = parseList(a.value("sizes", "1k,10k,100k"), "sizes", 16, 2000000);
-  const std::vector<int> keyCounts = parseList(a.value("keys", "2,4"), "keys", 1, 4);
+  const std::vector<int> sizes = cli::integerList(a.value("sizes", "1k,10k,100k"), "sizes", 16, 2000000);
+  const std::vector<int> keyCounts = cli::integerList(a.value("keys", "2,4"), "keys", 1, 4);
   const int frames = a.integer("frames", 24, 1, 100000);
   const int repeats = a.integer("repeats", 3, 1, 100);
   const int threads = a.integer("threads", 0, 0, 1024);

@@ -9,4 +9,7 @@ namespace ib {
 // args: the words after "bench". Returns the exit code; throws InputError on bad arguments.
 int runBench(const std::vector<std::string>& args);
 
+// `inbetween bench comesh ...` (bench_comesh.cpp): args after "comesh".
+int runBenchComesh(const std::vector<std::string>& args);
+
 }  // namespace ib

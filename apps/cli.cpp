@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <sstream>
 
 namespace ib::cli {
 
@@ -54,6 +55,27 @@ int Arguments::integer(const std::string& name, int fallback, int min, int max) 
     throw InputError(command_ + ": --" + name + " must be a whole number in [" + std::to_string(min) + ", " +
                      std::to_string(max) + "], got '" + it->second + "'");
   return static_cast<int>(v);
+}
+
+std::vector<int> integerList(const std::string& text, const std::string& option, int min, int max) {
+  std::vector<int> out;
+  std::stringstream in(text);
+  std::string item;
+  while (std::getline(in, item, ',')) {
+    int factor = 1;
+    if (!item.empty() && (item.back() == 'k' || item.back() == 'K')) {
+      factor = 1000;
+      item.pop_back();
+    }
+    char* end = nullptr;
+    const long v = std::strtol(item.c_str(), &end, 10) * factor;
+    if (item.empty() || *end != '\0' || v < min || v > max)
+      throw InputError("--" + option + " entry '" + item + "' must be in [" + std::to_string(min) + ", " +
+                       std::to_string(max) + "]");
+    out.push_back(static_cast<int>(v));
+  }
+  if (out.empty()) throw InputError("--" + option + " is empty");
+  return out;
 }
 
 }  // namespace ib::cli

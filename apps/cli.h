@@ -28,4 +28,8 @@ class Arguments {
   std::vector<std::string> positional_;
 };
 
+// A comma-separated list of integers, each optionally with a k suffix (x 1000) and in [min, max],
+// for option --`option` (named in the error).
+std::vector<int> integerList(const std::string& text, const std::string& option, int min, int max);
+
 }  // namespace ib::cli

@@ -17,8 +17,9 @@ constexpr const char* kUsage =
     "Interpolates key drawings (Zhu, Popovic, Bridson, Kaufman 2017).\n"
     "\n"
     "commands:\n"
-    "  mesh SCENE     build the multimesh of a scene (see `inbetween mesh --help`)\n"
+    "  mesh SCENE     build and optimize the multimesh of a scene (see `inbetween mesh --help`)\n"
     "  bench interp   benchmark the interpolation solver; one JSON object per case\n"
+    "  bench comesh   benchmark Comesh Optimization; one JSON object per case\n"
     "\n"
     "options:\n"
     "  -h, --help     show this help (also: inbetween COMMAND --help)\n";

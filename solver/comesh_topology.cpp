@@ -110,46 +110,53 @@ double Remesher::chordDeviation(int k, int a, int b) const {
   return mesh_.chordDeviation(k, arc, mesh_.u(a, k), end);
 }
 
-bool Remesher::flipImproves(int a, int b, int c, int d) const {
-  const std::vector<Eigen::Vector2d> none;
-  const AngleRange before = keyAngles(mesh_, {{a, b, c}, {b, a, d}}, -1, none);
-  const AngleRange after = keyAngles(mesh_, {{c, a, d}, {d, b, c}}, -1, none);
-  return !after.degenerate() && after.largest > before.largest + 1e-12;
+Remesher::WorstAngle Remesher::worstAngle(const Triangle& tri) const {
+  WorstAngle worst;
+  for (int k = 0; k < mesh_.keyCount(); ++k) {
+    const auto& x = mesh_.keys[k];
+    double l[3];
+    for (int i = 0; i < 3; ++i) l[i] = (x.row(tri[(i + 1) % 3]) - x.row(tri[i])).squaredNorm();
+    const int i = (l[0] >= l[1] && l[0] >= l[2]) ? 0 : (l[1] >= l[2] ? 1 : 2);
+    const double other = l[(i + 1) % 3], third = l[(i + 2) % 3];
+    const double cosine = (other + third - l[i]) / (2 * std::sqrt(other * third));  // law of cosines
+    if (cosine < worst.cosine) worst = {cosine, i};
+  }
+  return worst;
+}
+
+bool Remesher::flipImproves(int a, int b, int c, int d, double before) const {
+  for (int k = 0; k < mesh_.keyCount(); ++k) {
+    const auto& x = mesh_.keys[k];
+    auto p = [&](int v) -> Eigen::Vector2d { return x.row(v).transpose(); };
+    const AngleRange after = [&] {
+      AngleRange r = angles(p(c), p(a), p(d));
+      r.add(angles(p(d), p(b), p(c)));
+      return r;
+    }();
+    if (after.degenerate() || !(after.largest > before + 1e-12)) return false;
+  }
+  return true;
 }
 
 int Remesher::flipEdges(RemeshCounts& counts) {
   Timer timer(counts.flipSeconds);
   int flips = 0;
   for (size_t t = 0; t < mesh_.triangles.size(); ++t) {
-    // A flip keeps the whole angles at the edge's ends, so it can only lower the largest angle when
-    // that angle faces the edge: only edges that are a triangle's longest in some key are candidates.
+    // A flip keeps the whole angles at the edge's ends, so it can only lower the largest angle of
+    // the pair (over all keys) when that angle faces the edge: the only candidate of a triangle is
+    // its longest edge in the key where its largest angle is largest. (The twin's candidate is
+    // tried when the twin's turn comes.)
     const Triangle tri = mesh_.triangles[t];
-    std::array<bool, 3> candidate{false, false, false};
-    for (int k = 0; k < mesh_.keyCount(); ++k) {
-      const auto& x = mesh_.keys[k];
-      int longest = 0;
-      double length = -1;
-      for (int i = 0; i < 3; ++i) {
-        const double l = (x.row(tri[(i + 1) % 3]) - x.row(tri[i])).squaredNorm();
-        if (l > length) {
-          length = l;
-          longest = i;
-        }
-      }
-      candidate[longest] = true;
-    }
-    for (int i = 0; i < 3; ++i) {
-      if (!candidate[i]) continue;
-      const int a = tri[i], b = tri[(i + 1) % 3];
-      const int twin = mesh_.triangleWith(b, a);
-      if (twin < 0) continue;  // boundary (and so every cohesive) edge
-      const int c = tri[(i + 2) % 3], d = mesh_.thirdCorner(twin, b, a);
-      if (c == d || (mesh_.onBoundary(c) && mesh_.onBoundary(d)) || connected(mesh_, c, d)) continue;
-      if (!flipImproves(a, b, c, d)) continue;
-      mesh_.flip(a, b);
-      ++flips;
-      break;  // this triangle is now another one
-    }
+    const WorstAngle worst = worstAngle(tri);
+    const int a = tri[worst.edge], b = tri[(worst.edge + 1) % 3];
+    const int twin = mesh_.triangleWith(b, a);
+    if (twin < 0) continue;  // boundary (and so every cohesive) edge
+    const int c = tri[(worst.edge + 2) % 3], d = mesh_.thirdCorner(twin, b, a);
+    if (c == d || (mesh_.onBoundary(c) && mesh_.onBoundary(d)) || connected(mesh_, c, d)) continue;
+    const double before = std::min(worst.cosine, worstAngle(mesh_.triangles[twin]).cosine);
+    if (!flipImproves(a, b, c, d, before)) continue;
+    mesh_.flip(a, b);
+    ++flips;
   }
   counts.flips += flips;
   return flips;

@@ -48,7 +48,15 @@ class Remesher {
   int collapseEdges(RemeshCounts& counts);
 
  private:
-  bool flipImproves(int a, int b, int c, int d) const;
+  // The largest angle of a triangle over all keys: its cosine, and the edge facing it (i: tri[i] -> tri[i+1]).
+  struct WorstAngle {
+    double cosine = 1;
+    int edge = 0;
+  };
+  WorstAngle worstAngle(const Triangle& tri) const;
+  // Flipping (a, b) of triangles (a, b, c), (b, a, d) leaves every key positive and every new angle
+  // smaller than the largest before (given as its cosine).
+  bool flipImproves(int a, int b, int c, int d, double before) const;
   bool trySplit(int a, int b);
   bool tryCollapse(int from, int to);
   bool collapsible(int from, int to) const;

@@ -28,6 +28,9 @@ std::vector<ExampleScene> comeshScenes();
 // Three keys: pentagon, star and a thinner star, for the order of keys in the cyclic MIPS sum.
 ExampleScene threeStars();
 
+// Sixteen keys, a pentagon sharpening step by step into a thin star: the many-key benchmark.
+ExampleScene starSequence();
+
 // Writes FOLDER/NAME/scene.json and its drawings.
 void writeScene(const ExampleScene& scene, const std::string& folder);
 

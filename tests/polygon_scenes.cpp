@@ -52,27 +52,27 @@ std::string point(const std::array<double, 2>& p) {
   return out.str();
 }
 
-// A two-key scene: features "f0", "f1", ... at the given points of each key.
-ExampleScene twoKeys(const std::string& name, const std::string& first, const Polygon& firstShape,
-                     const Polygon& firstFeatures, const std::string& second, const Polygon& secondShape,
-                     const Polygon& secondFeatures) {
-  auto features = [](const Polygon& at) {
-    std::string out;
-    for (size_t i = 0; i < at.size(); ++i) out += (i ? ", " : "") + ("\"f" + std::to_string(i) + "\": ") + point(at[i]);
-    return out;
-  };
-  const std::string json = R"({
-  "version": 1,
-  "reference": ")" + first + R"(",
-  "edge_length": 12,
-  "keys": [
-    {"name": ")" + first + R"(", "drawing": ")" + first + R"(.png", "features": {)" + features(firstFeatures) + R"(}},
-    {"name": ")" + second + R"(", "drawing": ")" + second + R"(.png", "features": {)" + features(secondFeatures) + R"(}}
-  ]
-})";
-  return {name, json,
-          {{first + ".png", drawShape(kDrawing, kDrawing, polygon(firstShape))},
-           {second + ".png", drawShape(kDrawing, kDrawing, polygon(secondShape))}}};
+struct PolygonKey {
+  std::string name;
+  Polygon shape;
+  Polygon features;  // "f0", "f1", ... in order
+};
+
+// A scene with one polygon drawing per key; the first key is the reference.
+ExampleScene polygonScene(const std::string& name, const std::vector<PolygonKey>& keys) {
+  ExampleScene out{name, "", {}};
+  std::string list;
+  for (size_t k = 0; k < keys.size(); ++k) {
+    std::string features;
+    for (size_t i = 0; i < keys[k].features.size(); ++i)
+      features += (i ? ", " : "") + ("\"f" + std::to_string(i) + "\": ") + point(keys[k].features[i]);
+    list += std::string(k ? ",\n" : "") + R"(    {"name": ")" + keys[k].name + R"(", "drawing": ")" + keys[k].name +
+            R"(.png", "features": {)" + features + "}}";
+    out.drawings.push_back({keys[k].name + ".png", drawShape(kDrawing, kDrawing, polygon(keys[k].shape))});
+  }
+  out.json = "{\n  \"version\": 1,\n  \"reference\": \"" + keys[0].name + "\",\n  \"edge_length\": 12,\n  \"keys\": [\n" +
+             list + "\n  ]\n}\n";
+  return out;
 }
 
 // Every `step`-th corner of a polygon.
@@ -84,29 +84,32 @@ Polygon corners(const Polygon& shape, int step) {
 
 ExampleScene star(const std::string& name, int tips, double polygonRadius, double inner) {
   const Polygon base = regular(tips, polygonRadius, 0, -90), spiky = regular(2 * tips, 56, inner, -90);
-  return twoKeys(name, "polygon", base, base, "star", spiky, corners(spiky, 2));
+  return polygonScene(name, {{"polygon", base, base}, {"star", spiky, corners(spiky, 2)}});
 }
 
 ExampleScene squareHexagon() {
   const Polygon square = {{28, 28}, {100, 28}, {100, 100}, {28, 100}}, hexagon = regular(6, 48, 0, 0);
   const Polygon squareFeatures = {{100, 64}, {64, 100}, {28, 64}, {64, 28}};
   const Polygon hexagonFeatures = {hexagon[0], {64, 64 + 48 * std::sqrt(0.75)}, hexagon[3], {64, 64 - 48 * std::sqrt(0.75)}};
-  return twoKeys("square-hexagon", "square", square, squareFeatures, "hexagon", hexagon, hexagonFeatures);
+  return polygonScene("square-hexagon", {{"square", square, squareFeatures}, {"hexagon", hexagon, hexagonFeatures}});
 }
 
 }  // namespace
 
 ExampleScene threeStars() {
   const Polygon base = regular(5, 44, 0, -90), star = regular(10, 56, 24, -90), thin = regular(10, 56, 16, -90);
-  ExampleScene out = twoKeys("three-stars", "polygon", base, base, "star", star, corners(star, 2));
-  const std::string thinFeatures = R"(    {"name": "thin", "drawing": "thin.png", "features": {)";
-  std::string features;
-  const Polygon tips = corners(thin, 2);
-  for (size_t i = 0; i < tips.size(); ++i) features += (i ? ", " : "") + ("\"f" + std::to_string(i) + "\": ") + point(tips[i]);
-  const size_t end = out.json.rfind("\n  ]");
-  out.json.insert(end, ",\n" + thinFeatures + features + "}}");
-  out.drawings.push_back({"thin.png", drawShape(kDrawing, kDrawing, polygon(thin))});
-  return out;
+  return polygonScene("three-stars",
+                      {{"polygon", base, base}, {"star", star, corners(star, 2)}, {"thin", thin, corners(thin, 2)}});
+}
+
+ExampleScene starSequence() {
+  const Polygon base = regular(5, 44, 0, -90);
+  std::vector<PolygonKey> keys = {{"k00", base, base}};
+  for (int k = 1; k < 16; ++k) {
+    const Polygon shape = regular(10, 48 + 0.6 * k, 42 - 1.8 * k, -90);
+    keys.push_back({(k < 10 ? "k0" : "k") + std::to_string(k), shape, corners(shape, 2)});
+  }
+  return polygonScene("star-sequence", keys);
 }
 
 std::vector<ExampleScene> comeshScenes() {

@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
   try {
     for (const auto& scene : test::goodScenes()) test::writeScene(scene, argv[1]);
     for (const auto& scene : test::comeshScenes()) test::writeScene(scene, argv[1]);
+    test::writeScene(test::starSequence(), argv[1]);
     if (argc > 2 && std::string(argv[2]) == "--bad") test::writeBadScenes(argv[1]);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "write_example_scenes: %s\n", e.what());

@@ -1,0 +1,98 @@
+// `inbetween bench comesh`: Comesh Optimization on bundled scenes, one JSON line per case.
+#include "bench.h"
+
+#include "cli.h"
+#include "comesh.h"
+#include "error.h"
+#include "multimesh_builder.h"
+
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <unistd.h>
+
+namespace ib {
+
+namespace {
+
+constexpr const char* kUsage =
+    "usage: inbetween bench comesh [--sizes LIST] [--keys LIST] [--assets DIR]\n"
+    "\n"
+    "Comesh Optimization (paper Algorithm 1, fixed parameters) on bundled scenes. One JSON line per\n"
+    "case: vertices_in/out, keys, outer, inner, flips/splits/collapses and their seconds, seconds\n"
+    "(Comesh alone) and build_seconds (tracing, meshing and the initial map, not included).\n"
+    "\n"
+    "  --sizes LIST   approximate vertex counts for square-hexagon (default 300,1k,17k,100k)\n"
+    "  --keys LIST    key counts taken from star-sequence's 16 keys (default 2,4,8,16)\n"
+    "  --assets DIR   folder holding square-hexagon/ and star-sequence/ (default: the source tree's\n"
+    "                 assets/)\n";
+
+using Clock = std::chrono::steady_clock;
+
+void progress(const std::string& text) {
+  if (isatty(STDERR_FILENO)) std::fprintf(stderr, "\r\033[K%s", text.c_str());
+}
+
+nlohmann::json runCase(Scene scene, const std::string& label) {
+  progress(label + ": building the initial map");
+  const auto started = Clock::now();
+  const BuiltScene built = buildMultimesh(scene, MultimeshBuildOptions{});
+  const double buildSeconds = std::chrono::duration<double>(Clock::now() - started).count();
+  ComeshOptions options;
+  options.progress = [&](int outer, double energy) {
+    char text[128];
+    std::snprintf(text, sizeof text, "%s: outer iteration %d, energy %.6g", label.c_str(), outer, energy);
+    progress(text);
+  };
+  ComeshReport r;
+  comeshOptimize(*built.multimesh, &built.boundary, options, &r);
+  progress("");
+  return {{"bench", "comesh"},           {"scene", label},
+          {"vertices_in", r.verticesIn}, {"vertices_out", r.verticesOut},
+          {"keys", r.keys},              {"outer", r.outerIterations},
+          {"inner", r.innerIterations},  {"flips", r.remesh.flips},
+          {"splits", r.remesh.splits},   {"collapses", r.remesh.collapses},
+          {"flip_seconds", r.remesh.flipSeconds}, {"split_seconds", r.remesh.splitSeconds},
+          {"collapse_seconds", r.remesh.collapseSeconds}, {"seconds", r.seconds},
+          {"build_seconds", buildSeconds}};
+}
+
+void print(const nlohmann::json& line) {
+  std::printf("%s\n", line.dump().c_str());
+  std::fflush(stdout);
+}
+
+}  // namespace
+
+int runBenchComesh(const std::vector<std::string>& args) {
+  const cli::Arguments a("bench comesh", args, {"sizes", "keys", "assets"}, {"help"});
+  if (a.flag("help")) {
+    std::fputs(kUsage, stdout);
+    return 0;
+  }
+  if (!a.positional().empty()) throw InputError("bench comesh: unexpected argument '" + a.positional()[0] + "'");
+  const std::vector<int> sizes = cli::integerList(a.value("sizes", "300,1k,17k,100k"), "sizes", 50, 1000000);
+  const std::vector<int> keyCounts = cli::integerList(a.value("keys", "2,4,8,16"), "keys", 2, 16);
+  const std::filesystem::path assets = a.value("assets", INBETWEEN_ASSETS);
+
+  const Scene squareHexagon = loadScene((assets / "square-hexagon" / "scene.json").string());
+  // Vertex count goes with 1 / edge length^2: the bundled scene has about 400 vertices at its own.
+  const double referenceVertices = 400;
+  for (int vertices : sizes) {
+    Scene scene = squareHexagon;
+    scene.edgeLength = squareHexagon.edgeLength * std::sqrt(referenceVertices / vertices);
+    print(runCase(scene, "square-hexagon@" + std::to_string(vertices)));
+  }
+  const Scene sequence = loadScene((assets / "star-sequence" / "scene.json").string());
+  for (int keys : keyCounts) {
+    Scene scene = sequence;
+    scene.keys.resize(keys);
+    print(runCase(scene, "star-sequence@" + std::to_string(keys)));
+  }
+  return 0;
+}
+
+}  // namespace ib
