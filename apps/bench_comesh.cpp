@@ -79,8 +79,8 @@ int runBenchComesh(const std::vector<std::string>& args) {
   const std::filesystem::path assets = a.value("assets", INBETWEEN_ASSETS);
 
   const Scene squareHexagon = loadScene((assets / "square-hexagon" / "scene.json").string());
-  // Vertex count goes with 1 / edge length^2: the bundled scene has about 400 vertices at its own.
-  const double referenceVertices = 400;
+  // Vertex count goes with 1 / edge length^2: calibrated on the bundled scene at 300-17k vertices.
+  const double referenceVertices = 365;
   for (int vertices : sizes) {
     Scene scene = squareHexagon;
     scene.edgeLength = squareHexagon.edgeLength * std::sqrt(referenceVertices / vertices);

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Installs, builds and runs the main job on a bundled example: the multimesh of
-# assets/square-arch-notch (out/square-arch-notch.ibmesh and one SVG per key), then the
+# Installs, builds and runs the main job on a bundled example: the Comesh-optimized multimesh of
+# assets/square-arch-notch (out/square-arch-notch.ibmesh, the initial map beside it as
+# out/square-arch-notch.initial.ibmesh, one SVG per key and version), then the
 # interpolation benchmark (out/bench-interp.jsonl).
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)

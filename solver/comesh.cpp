@@ -28,7 +28,7 @@ class VertexStepper {
     Eigen::MatrixX2d gradient;
     const double before = comeshBlockEnergy(mesh_.triangles, mesh_.keys, key_, &gradient, odtWeight_);
     const int n = mesh_.vertexCount();
-    preconditioner_.update(mesh_, mesh_.topologyVersion);
+    preconditioner_.update(mesh_);
     preconditioner_.apply(mesh_, gradient, direction_);
     slide_.setZero(n);
     for (int v = 0; v < n; ++v) {

@@ -93,6 +93,7 @@ void ComeshMesh::flip(int a, int b) {
 
 void ComeshMesh::split(int a, int b, int v) {
   ++topologyVersion;
+  ++vertexSetVersion;
   for (const auto& [p, q] : {std::pair{a, b}, std::pair{b, a}}) {
     const int t = triangleWith(p, q);
     if (t < 0) continue;
@@ -128,6 +129,7 @@ void ComeshMesh::splitPairs(int a, int b, int v, int c, int d, int w) {
 
 void ComeshMesh::collapse(int from, int to) {
   ++topologyVersion;
+  ++vertexSetVersion;
   if (next[from] == to) {
     previous[to] = previous[from];
     next[previous[from]] = to;

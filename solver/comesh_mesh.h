@@ -77,6 +77,7 @@ struct ComeshMesh {
   std::vector<std::vector<char>> outline;           // [key][vertex]: in B_i
   std::vector<char> fixed;                    // [vertex]: never moves (all boundary vertices without `boundary`)
   long topologyVersion = 0;                   // counts flips, splits and collapses
+  long vertexSetVersion = 0;                  // counts splits and collapses (vertices added or emptied)
 
  private:
   void setTriangle(int t, const Triangle& corners);

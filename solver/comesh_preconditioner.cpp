@@ -4,9 +4,13 @@
 
 namespace ib {
 
-void SobolevPreconditioner::update(const ComeshMesh& mesh, long topologyVersion) {
-  if (topologyVersion == version_) return;
-  version_ = topologyVersion;
+void SobolevPreconditioner::update(const ComeshMesh& mesh) {
+  ++age_;
+  if (mesh.topologyVersion == version_) return;
+  if (mesh.vertexSetVersion == vertexSetVersion_ && age_ < refreshAfter) return;
+  version_ = mesh.topologyVersion;
+  vertexSetVersion_ = mesh.vertexSetVersion;
+  age_ = 0;
   const int n = mesh.vertexCount();
   unknown_.assign(n, -1);
   valence_.assign(n, 0);

@@ -2,7 +2,9 @@
 // d = -(L + I)^-1 g on the interior vertices, L the graph Laplacian of the shared topology with the
 // boundary held (Dirichlet). Plain gradient descent on MIPS and ODT moves the mesh's smooth,
 // mesh-wide modes very slowly; through L^-1 they move at the pace of the local ones. L depends on
-// topology only, so it is shared by every key and refactorized only after flips, splits or collapses.
+// topology only, so it is shared by every key. Any such L is a valid preconditioner, so after
+// flips alone it is kept for a while (refactorized every `refreshAfter` calls); after splits or
+// collapses, which change the vertex set, it is rebuilt at once.
 #pragma once
 
 #include "comesh_mesh.h"
@@ -15,15 +17,19 @@ namespace ib {
 
 class SobolevPreconditioner {
  public:
-  // Rebuilds L for `mesh` when its topology changed since the last call (by `topologyVersion`).
-  void update(const ComeshMesh& mesh, long topologyVersion);
+  // Rebuilds L for `mesh` when its vertex set changed, or its edges changed and L is older than
+  // `refreshAfter` calls.
+  void update(const ComeshMesh& mesh);
+
+  int refreshAfter = 25;  // calls between refactorizations while only flips happen. Default 25.
 
   // direction (n x 2) = -(L + I)^-1 gradient on interior vertices, -gradient / (valence + 1) on
   // the others (the local scale of the same operator).
   void apply(const ComeshMesh& mesh, const Eigen::MatrixX2d& gradient, Eigen::MatrixX2d& direction) const;
 
  private:
-  long version_ = -1;
+  long version_ = -1, vertexSetVersion_ = -1;  // the mesh's versions when L was built
+  int age_ = 0;                                 // update() calls since
   std::vector<int> unknown_;  // [vertex]: row in L, or -1 (boundary, fixed, or without triangles)
   std::vector<int> valence_;  // [vertex]
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> factor_;
