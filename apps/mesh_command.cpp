@@ -12,6 +12,7 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <stdexcept>
 #include <nlohmann/json.hpp>
 
 namespace ib {
@@ -88,7 +89,11 @@ int runMesh(const std::vector<std::string>& rawArgs) {
     };
     ComeshReport report;
     const Multimesh optimized = comeshOptimize(*built.multimesh, &built.boundary, comeshOptions, &report);
-    optimized.validate();
+    try {
+      optimized.validate();
+    } catch (const InputError& e) {  // the input was fine: a broken result is our fault (exit 1)
+      throw std::runtime_error(std::string("Comesh Optimization produced an invalid multimesh: ") + e.what());
+    }
     progress.update("writing", 0.95);
     const fs::path initialFile = besideOutput(output, ".initial.ibmesh");
     saveMultimesh(*built.multimesh, initialFile.string());
