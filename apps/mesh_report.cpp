@@ -1,6 +1,7 @@
 #include "mesh_report.h"
 
 #include "mesh_quality.h"
+#include "untangle.h"
 
 #include <Eigen/Dense>
 
@@ -12,10 +13,9 @@ nlohmann::json qualityJson(const Multimesh& mesh, const std::vector<std::string>
   const MultimeshQuality quality = measureQuality(mesh);
   nlohmann::json out{{"vertices", mesh.vertexCount()}, {"triangles", mesh.triangleCount()}};
   out["keys"] = nlohmann::json::array();
+  const std::vector<Triangle> triangles = mesh.triangles();
   for (int k = 0; k < mesh.keyCount(); ++k) {
-    double smallestArea = std::numeric_limits<double>::infinity();
-    const Eigen::MatrixX2d x = mesh.keyPositions(k);
-    for (const Triangle& t : mesh.triangles()) smallestArea = std::min(smallestArea, 0.5 * edgeMatrix(x, t).determinant());
+    const double smallestArea = smallestTriangleArea(triangles, mesh.keyPositions(k)).first;
     out["keys"].push_back({{"name", keyNames[k]},
                            {"cohesive_edges", mesh.cohesivePairs(k).size()},
                            {"smallest_area", smallestArea},

@@ -88,6 +88,7 @@ class VertexStepper {
     mesh_.u.col(key_) = startU;
     for (int v = 0; v < x.rows(); ++v) {
       if (direction_.row(v).isZero()) continue;
+      const double allowance = slide_[v] != 0 ? outlineAllowance(v) : 0.0;
       double scale = stepSize;
       for (int halving = 0; halving < 30; ++halving, scale *= 0.5) {
         if (slide_[v] != 0) {
@@ -96,7 +97,7 @@ class VertexStepper {
           if (!(u > lo && u < hi)) continue;
           x.row(v) = mesh_.point(key_, mesh_.arc[v], u).transpose();
           mesh_.u(v, key_) = u;
-          if (!keepsGap(v) || !followsOutline(v, startU[v])) {
+          if (!keepsGap(v) || !followsOutline(v, allowance)) {
             x.row(v) = start.row(v);
             mesh_.u(v, key_) = startU[v];
             continue;
@@ -120,16 +121,23 @@ class VertexStepper {
     return before >= minimumGap_ && after >= minimumGap_ && before <= maximumGap_ && after <= maximumGap_;
   }
 
-  // The boundary edges on either side of a sliding vertex stay within tolerance of the outline,
-  // or at least no further from it than before the move (from fraction `before`).
-  bool followsOutline(int v, double before) const {
+  // How far a sliding vertex's boundary edges may stray from the outline (px): the tolerance, or
+  // as far as they already do at its current place.
+  double outlineAllowance(int v) const {
+    if (!mesh_.chordDeviation) return 0;
+    const auto [lo, hi] = slideRange(v);
+    const int arc = mesh_.arc[v];
+    const double u = mesh_.u(v, key_);
+    return std::max({chordTolerance_, mesh_.chordDeviation(key_, arc, lo, u), mesh_.chordDeviation(key_, arc, u, hi)});
+  }
+
+  // The boundary edges on either side of a sliding vertex, at its new place, stay within `allowance`.
+  bool followsOutline(int v, double allowance) const {
     if (!mesh_.chordDeviation) return true;
     const auto [lo, hi] = slideRange(v);
     const int arc = mesh_.arc[v];
     const double now = mesh_.u(v, key_);
-    const double allowed = std::max({chordTolerance_, mesh_.chordDeviation(key_, arc, lo, before),
-                                     mesh_.chordDeviation(key_, arc, before, hi)});
-    return mesh_.chordDeviation(key_, arc, lo, now) <= allowed && mesh_.chordDeviation(key_, arc, now, hi) <= allowed;
+    return mesh_.chordDeviation(key_, arc, lo, now) <= allowance && mesh_.chordDeviation(key_, arc, now, hi) <= allowance;
   }
 
   bool oneRingPositive(int v) const {
