@@ -9,6 +9,7 @@
 #include "multimesh_builder.h"
 #include "multimesh_io.h"
 #include "progress.h"
+#include "stiffness_paint.h"
 
 #include <cstdio>
 #include <filesystem>
@@ -88,7 +89,9 @@ int runMesh(const std::vector<std::string>& rawArgs) {
       progress.update(stage, buildShare + (0.9 - buildShare) * outer / comeshOptions.outerIterations);
     };
     ComeshReport report;
-    const Multimesh optimized = comeshOptimize(*built.multimesh, &built.boundary, comeshOptions, &report);
+    Multimesh optimized = comeshOptimize(*built.multimesh, &built.boundary, comeshOptions, &report);
+    // Flips, splits and collapses made new triangles: paint them again from the scene.
+    paintStiffness(optimized, scene.stiffness, scene.solver.kappa);
     try {
       optimized.validate();
     } catch (const InputError& e) {  // the input was fine: a broken result is our fault (exit 1)

@@ -1,9 +1,13 @@
 #include "anderson.h"
 
+#include "thread_block.h"
+
 #include <Eigen/Dense>
 #include <algorithm>
+#include <array>
 #include <omp.h>
 #include <utility>
+#include <vector>
 
 namespace ib {
 
@@ -17,17 +21,6 @@ void AndersonAcceleration::reset() {
 }
 
 void AndersonAcceleration::restart() { havePrevious_ = false; }
-
-namespace {
-
-// This thread's contiguous share [first, first + count) of `size` rows.
-std::pair<Eigen::Index, Eigen::Index> rowBlock(Eigen::Index size) {
-  const Eigen::Index threads = omp_get_num_threads(), id = omp_get_thread_num();
-  const Eigen::Index first = size * id / threads, last = size * (id + 1) / threads;
-  return {first, last - first};
-}
-
-}  // namespace
 
 void AndersonAcceleration::next(const Eigen::Ref<const Eigen::VectorXd>& gx,
                                 const Eigen::Ref<const Eigen::VectorXd>& f, Eigen::Ref<Eigen::VectorXd> out) {
@@ -53,7 +46,8 @@ void AndersonAcceleration::next(const Eigen::Ref<const Eigen::VectorXd>& gx,
   // Gram row and dF^T f, and remember (f, G(x)) for the next call. Plain loops with explicit
   // simd reductions: the float-to-double products vectorize.
   const int cols = stored_, fresh = newest_;
-  double sums[2 * kMaxDepth] = {};  // [gram row | dF^T f]
+  // Per thread: [gram row | dF^T f], added in thread order below (bit-identical every run).
+  std::vector<std::array<double, 2 * kMaxDepth>> partial(static_cast<size_t>(threads_));
 #pragma omp parallel num_threads(threads_)
   {
     const auto [first, count] = rowBlock(size);
@@ -93,12 +87,18 @@ void AndersonAcceleration::next(const Eigen::Ref<const Eigen::VectorXd>& gx,
       pf[r] = fb[r];
       pg[r] = gb[r];
     }
-#pragma omp critical
+    auto& mine = partial[static_cast<size_t>(omp_get_thread_num())];
     for (int j = 0; j < cols; ++j) {
-      sums[j] += gramRow[j];
-      sums[kMaxDepth + j] += projected[j];
+      mine[j] = gramRow[j];
+      mine[kMaxDepth + j] = projected[j];
     }
   }
+  double sums[2 * kMaxDepth] = {};
+  for (const auto& p : partial)
+    for (int j = 0; j < cols; ++j) {
+      sums[j] += p[j];
+      sums[kMaxDepth + j] += p[kMaxDepth + j];
+    }
   havePrevious_ = true;
   if (cols == 0) {
     out = gx;

@@ -1,6 +1,7 @@
 #include "deformation_energy.h"
 
 #include "error.h"
+#include "thread_block.h"
 
 #include <Eigen/LU>
 #include <cmath>
@@ -94,13 +95,18 @@ double DeformationEnergy::evaluate(const Eigen::MatrixX2d& x, const ActiveKeys& 
   const int* c0 = corner_[0].data();
   const int* c1 = corner_[1].data();
   const int* c2 = corner_[2].data();
-  double energy = 0;
+  // Each thread sums its own triangles; the sums are added in thread order afterwards, so the
+  // energy is bit-identical from run to run (an OpenMP reduction adds them in arrival order).
+  std::vector<double> partial(static_cast<size_t>(threads), 0.0);
 #pragma omp parallel num_threads(threads)
   {
-    // Every loop over triangles has the same static schedule, so a thread only reads the
+    double energy = 0;
+    // Every loop over triangles runs over this thread's block, so a thread only reads the
     // entries it wrote itself: no barrier between them.
-#pragma omp for simd schedule(static) nowait
-    for (int k = 0; k < t; ++k) {
+    const auto [first, count] = rowBlock(t);
+    const int begin = static_cast<int>(first), end = static_cast<int>(first + count);
+#pragma omp simd
+    for (int k = begin; k < end; ++k) {
       D00[k] = px[c1[k]] - px[c0[k]];
       D01[k] = px[c2[k]] - px[c0[k]];
       D10[k] = py[c1[k]] - py[c0[k]];
@@ -115,8 +121,8 @@ double DeformationEnergy::evaluate(const Eigen::MatrixX2d& x, const ActiveKeys& 
       const double* b11 = r + 3 * t;
       const double* cw = r + 4 * t;
       const double w = keys.weight[a];
-#pragma omp for simd schedule(static) nowait reduction(+ : energy)
-      for (int k = 0; k < t; ++k) {
+#pragma omp simd reduction(+ : energy)
+      for (int k = begin; k < end; ++k) {
         // F = D B, R its closest rotation, G += 2 w c (F - R) B^T.
         const double f00 = D00[k] * b00[k] + D01[k] * b10[k], f01 = D00[k] * b01[k] + D01[k] * b11[k];
         const double f10 = D10[k] * b00[k] + D11[k] * b10[k], f11 = D10[k] * b01[k] + D11[k] * b11[k];
@@ -132,6 +138,7 @@ double DeformationEnergy::evaluate(const Eigen::MatrixX2d& x, const ActiveKeys& 
         G11[k] += two * (e10 * b10[k] + e11 * b11[k]);
       }
     }
+    partial[omp_get_thread_num()] = energy;
 #pragma omp barrier
     // dW/dx_v: corner 0 of a triangle receives -(G e_0 + G e_1), corners 1 and 2 the columns of G.
     double* gx = gradient.col(0).data();
@@ -157,6 +164,8 @@ double DeformationEnergy::evaluate(const Eigen::MatrixX2d& x, const ActiveKeys& 
       gy[v] += ay;
     }
   }
+  double energy = 0;
+  for (double p : partial) energy += p;
   return energy;
 }
 

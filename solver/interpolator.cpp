@@ -41,6 +41,20 @@ void validateOptions(const InterpolationParams& p, const SolverOptions& o) {
   require(o.threads >= 0, "threads", "must be >= 0 (0 = all cores)");
 }
 
+// E_S = 1/2 sum_v c_v |x_v - y_v|^2, its gradient added to g. Summed serially: bit-identical
+// results for any thread count.
+double springEnergyOf(const Eigen::VectorXd& c, const Eigen::MatrixX2d& target, const Eigen::MatrixX2d& x,
+                      Eigen::MatrixX2d& g) {
+  double energy = 0;
+  for (Eigen::Index v = 0; v < x.rows(); ++v) {
+    const double dx = x(v, 0) - target(v, 0), dy = x(v, 1) - target(v, 1);
+    energy += c(v) * (dx * dx + dy * dy);
+    g(v, 0) += c(v) * dx;
+    g(v, 1) += c(v) * dy;
+  }
+  return 0.5 * energy;
+}
+
 double infinityNorm(const Eigen::MatrixX2d& g) { return g.size() ? g.cwiseAbs().maxCoeff() : 0.0; }
 
 Eigen::Map<const Eigen::VectorXd> flat(const Eigen::MatrixX2d& x) { return {x.data(), x.size()}; }
@@ -69,6 +83,8 @@ void validateWeights(const Eigen::VectorXd& w, int keyCount) {
 
 struct Interpolator::Frame {
   Eigen::VectorXd w;
+  Eigen::VectorXd springs;         // c_v (empty: no springs)
+  Eigen::MatrixX2d springTarget;   // y_v, normalized
   ActiveKeys keys;
   Eigen::MatrixX2d blend;         // Xbar(w) = sum_i w_i X_i, normalized
   std::vector<int> participants;  // W_O boundary vertices
@@ -113,14 +129,26 @@ Interpolator::Interpolator(const Multimesh& mesh, const InterpolationParams& par
   double diagonal = 0;
   for (const auto& Mt : M) diagonal += Mt.sum();  // sum of E^T M E's diagonal = sum of M's entries
   diagonal /= vertexCount();
+  stiffnessScale_ = diagonal;
   gradientFloor_ = 1e-13 * diagonal;
   nonOverlap_ = std::make_unique<NonOverlap>(mesh, options.nonOverlapStiffness * diagonal);
 }
 
-Interpolator::Frame Interpolator::makeFrame(const Eigen::VectorXd& w) const {
+Interpolator::Frame Interpolator::makeFrame(const Eigen::VectorXd& w, const VertexSprings* springs) const {
   validateWeights(w, keyCount());
   Frame f;
   f.w = w;
+  if (springs) {
+    const int n = vertexCount();
+    if (springs->stiffness.size() != n || springs->target.rows() != n)
+      throw InputError("vertex springs: expected " + std::to_string(n) + " stiffnesses and targets");
+    if (!springs->target.allFinite() || !springs->stiffness.allFinite() || springs->stiffness.minCoeff() < 0)
+      throw InputError("vertex springs: stiffnesses must be finite and >= 0, targets finite");
+    if (springs->stiffness.maxCoeff() > 0) {
+      f.springs = springs->stiffness;
+      f.springTarget = springs->target / scale_;
+    }
+  }
   f.keys = activeKeys(w);
   f.blend = Eigen::MatrixX2d::Zero(vertexCount(), 2);
   for (size_t a = 0; a < f.keys.index.size(); ++a) f.blend += f.keys.weight[a] * keys_[f.keys.index[a]];
@@ -133,8 +161,9 @@ void Interpolator::evaluateState(const Frame& frame, State& s) const {
   s.gradient.resize(n, 2);
   // E_P first: it also initializes the gradient.
   const double tie = options_.placementStiffness * vertexWeight_;  // mu m_v
+  // Serial: an OpenMP reduction would add the threads' sums in arrival order, and frames must be
+  // bit-identical from run to run. The loop is a small share of an iteration.
   double placement = 0;
-#pragma omp parallel for schedule(static) reduction(+ : placement) num_threads(threads_)
   for (int v = 0; v < n; ++v) {
     const double dx = s.x(v, 0) - frame.blend(v, 0), dy = s.x(v, 1) - frame.blend(v, 1);
     placement += dx * dx + dy * dy;
@@ -143,6 +172,7 @@ void Interpolator::evaluateState(const Frame& frame, State& s) const {
   }
   s.placement = 0.5 * tie * placement;
   s.energy = s.placement;
+  if (frame.springs.size()) s.energy += springEnergyOf(frame.springs, frame.springTarget, s.x, s.gradient);
   s.energy += deformation_->evaluate(s.x, frame.keys, s.gradient, threads_);
   s.energy += cohesive_->evaluate(s.x, frame.w, s.gradient, s.active);
   s.contacts.clear();
@@ -171,8 +201,9 @@ void Interpolator::align(const Frame& frame, const State& reference, Eigen::Matr
   alignGroups(x, frame.blend, groups_);
 }
 
-Eigen::SparseMatrix<double> Interpolator::globalMatrix(const Eigen::VectorXd& w, const std::vector<char>& active) const {
+Eigen::SparseMatrix<double> Interpolator::globalMatrix(const Frame& frame, const std::vector<char>& active) const {
   const int n = vertexCount();
+  const Eigen::VectorXd& w = frame.w;
   std::vector<Eigen::Triplet<double>> entries;
   const auto& triangles = deformation_->triangles();
   const auto M = deformation_->metrics(activeKeys(w));
@@ -197,7 +228,8 @@ Eigen::SparseMatrix<double> Interpolator::globalMatrix(const Eigen::VectorXd& w,
         entries.emplace_back(vert[r], vert[c], k * block * sign[r] * sign[c]);
       }
   }
-  for (int v = 0; v < n; ++v) entries.emplace_back(v, v, options_.placementStiffness * vertexWeight_);
+  for (int v = 0; v < n; ++v)
+    entries.emplace_back(v, v, options_.placementStiffness * vertexWeight_ + (frame.springs.size() ? frame.springs(v) : 0.0));
   if (params_.nonOverlap)
     for (int v : nonOverlap_->allBoundaryVertices()) entries.emplace_back(v, v, nonOverlap_->stiffness());
   Eigen::SparseMatrix<double> H(n, n);
@@ -205,26 +237,44 @@ Eigen::SparseMatrix<double> Interpolator::globalMatrix(const Eigen::VectorXd& w,
   return H;
 }
 
-void Interpolator::refactorize(const Eigen::VectorXd& w, const std::vector<char>& active, InterpolationResult& result) {
+void Interpolator::refactorize(const Frame& frame, const std::vector<char>& active, InterpolationResult& result) {
   const auto started = std::chrono::steady_clock::now();
-  factor_.factorize(globalMatrix(w, active));
-  factorWeights_ = w;
+  factor_.factorize(globalMatrix(frame, active));
+  factorWeights_ = frame.w;
+  factorSprings_ = frame.springs;
+  factorValid_ = true;
   factorActive_ = active;
   ++result.factorizations;
   result.factorMilliseconds +=
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
 }
 
-void Interpolator::ensureFactorization(const Eigen::VectorXd& w, const std::vector<char>& active,
-                                       InterpolationResult& result) {
-  const bool fresh = factor_.factorized() && (w - factorWeights_).lpNorm<1>() <= options_.refactorDistance &&
-                     (options_.refactorDistance > 0 || w == factorWeights_) && active == factorActive_;
-  if (!fresh) refactorize(w, active, result);
+// Whether H's springs still model the frame's: none on both sides, or every c_v within a fifth
+// of H's (plus a small absolute slack, so springs fading to zero do not refactorize every frame).
+bool Interpolator::springsMatch(const Eigen::VectorXd& springs) const {
+  if (springs.size() == 0 || factorSprings_.size() == 0) return springs.size() == factorSprings_.size();
+  const double slack = 0.02 * stiffnessScale_;
+  for (Eigen::Index v = 0; v < springs.size(); ++v)
+    if (std::abs(springs(v) - factorSprings_(v)) > 0.1 * (springs(v) + factorSprings_(v)) + slack) return false;
+  return true;
+}
+
+void Interpolator::ensureFactorization(const Frame& frame, const std::vector<char>& active, InterpolationResult& result) {
+  const Eigen::VectorXd& w = frame.w;
+  const bool fresh = factorValid_ && (w - factorWeights_).lpNorm<1>() <= options_.refactorDistance &&
+                     (options_.refactorDistance > 0 || w == factorWeights_) && active == factorActive_ &&
+                     springsMatch(frame.springs);
+  if (!fresh) refactorize(frame, active, result);
+}
+
+void Interpolator::forgetHistory() {
+  anderson_.reset();
+  factorValid_ = false;
 }
 
 EnergyEvaluation Interpolator::evaluate(const Eigen::MatrixX2d& x, const Eigen::VectorXd& w) const {
   if (x.rows() != vertexCount()) throw InputError("positions: expected " + std::to_string(vertexCount()) + " rows");
-  const Frame frame = makeFrame(w);
+  const Frame frame = makeFrame(w, nullptr);
   State s;
   s.x = x / scale_;
   evaluateState(frame, s);
@@ -232,7 +282,7 @@ EnergyEvaluation Interpolator::evaluate(const Eigen::MatrixX2d& x, const Eigen::
 }
 
 int Interpolator::countOverlaps(const Eigen::MatrixX2d& x, const Eigen::VectorXd& w) const {
-  return nonOverlap_->countInside(x / scale_, makeFrame(w).participants);
+  return nonOverlap_->countInside(x / scale_, makeFrame(w, nullptr).participants);
 }
 
 Interpolator::Step Interpolator::step(const Frame& frame, const State& s, State& candidate, Eigen::MatrixX2d& plain,
@@ -247,7 +297,7 @@ Interpolator::Step Interpolator::step(const Frame& frame, const State& s, State&
   plain = s.gradient;
   factor_.solve(plain);
   plain = s.x - plain;
-  align(frame, s, plain);
+  if (!frame.springs.size()) align(frame, s, plain);
   candidate.x.resize(vertexCount(), 2);
   anderson_.next(flat(plain), flat(s.gradient), flatMutable(candidate.x));
   if (tryCandidate()) return Step::kAccepted;
@@ -258,7 +308,7 @@ Interpolator::Step Interpolator::step(const Frame& frame, const State& s, State&
   }
   if (s.active != factorActive_) {
     // Cohesive pairs engaged or let go since H was built: H no longer models the energy.
-    refactorize(frame.w, s.active, result);
+    refactorize(frame, s.active, result);
     anderson_.reset();
     return Step::kRefactorized;
   }
@@ -269,9 +319,10 @@ Interpolator::Step Interpolator::step(const Frame& frame, const State& s, State&
   return Step::kStalled;
 }
 
-InterpolationResult Interpolator::solve(const Eigen::VectorXd& w, const Eigen::MatrixX2d* warmStart) {
+InterpolationResult Interpolator::solve(const Eigen::VectorXd& w, const Eigen::MatrixX2d* warmStart,
+                                        const VertexSprings* springs) {
   const auto started = std::chrono::steady_clock::now();
-  const Frame frame = makeFrame(w);
+  const Frame frame = makeFrame(w, springs);
   State s;
   if (warmStart) {
     if (warmStart->rows() != vertexCount() || !warmStart->allFinite())
@@ -280,14 +331,17 @@ InterpolationResult Interpolator::solve(const Eigen::VectorXd& w, const Eigen::M
   } else {
     s.x = frame.blend;
   }
-  // Place the start rigidly with the groups its own links define, then evaluate.
-  evaluateLinks(frame, s);
-  align(frame, s, s.x);
+  // Place the start rigidly with the groups its own links define (springs hold the rigid motions
+  // themselves), then evaluate.
+  if (!frame.springs.size()) {
+    evaluateLinks(frame, s);
+    align(frame, s, s.x);
+  }
   evaluateState(frame, s);
 
   InterpolationResult result;
   result.evaluations = 1;
-  ensureFactorization(w, s.active, result);
+  ensureFactorization(frame, s.active, result);
   result.startEnergy = s.energy;
   result.energyHistory.push_back(s.energy);
   const double startNorm = infinityNorm(s.gradient);

@@ -69,6 +69,15 @@ struct InterpolationResult {
   std::vector<double> residualHistory;  // relative residual after each iteration (start first: 1)
 };
 
+// Extra per-vertex springs E_S = 1/2 sum_v c_v |x_v - y_v|^2 added to the energy of one solve:
+// the dynamics terms (W_T of eq. 18 and the anchor, see dynamics.h). They also hold the rigid
+// motions the other energies leave free, so a solve with springs does not place groups rigidly
+// on the blend; every group needs some c_v > 0.
+struct VertexSprings {
+  Eigen::VectorXd stiffness;  // n x 1, c_v >= 0 in normalized units (energy per shape size squared)
+  Eigen::MatrixX2d target;    // n x 2, y_v in the multimesh's units
+};
+
 struct EnergyEvaluation {
   double energy = 0;          // W_I + E_P, normalized units
   Eigen::MatrixX2d gradient;  // d energy / d x, n x 2, with x in the multimesh's units
@@ -80,8 +89,16 @@ class Interpolator {
   Interpolator(const Multimesh& mesh, const InterpolationParams& params, const SolverOptions& options);
 
   // Solves for weights w (m x 1, convex). warmStart (n x 2, multimesh units) is the previous
-  // frame; without it the solve starts from the linear blend sum_i w_i X_i.
-  InterpolationResult solve(const Eigen::VectorXd& w, const Eigen::MatrixX2d* warmStart = nullptr);
+  // frame; without it the solve starts from the linear blend sum_i w_i X_i. springs, when given,
+  // add E_S to this solve's energy (and to H, which is then refactorized whenever some c_v has
+  // moved by more than a fifth since the last factorization).
+  InterpolationResult solve(const Eigen::VectorXd& w, const Eigen::MatrixX2d* warmStart = nullptr,
+                            const VertexSprings* springs = nullptr);
+
+  // Forgets what carries over from frame to frame (the Anderson history and the factorization of
+  // H), so the next solve behaves exactly as on a fresh Interpolator: a stream restarted from its
+  // first frame repeats its frames bit for bit.
+  void forgetHistory();
 
   // Energy and gradient at x for weights w, local-step quantities taken at x (for tests).
   EnergyEvaluation evaluate(const Eigen::MatrixX2d& x, const Eigen::VectorXd& w) const;
@@ -91,6 +108,9 @@ class Interpolator {
   int countOverlaps(const Eigen::MatrixX2d& x, const Eigen::VectorXd& w) const;
 
   double shapeSize() const { return scale_; }
+  // Mean diagonal entry of the ARAP matrix at uniform weights (normalized units): how stiff one
+  // vertex is held by its triangles. Spring constants are stated relative to it.
+  double stiffnessScale() const { return stiffnessScale_; }
   int keyCount() const { return static_cast<int>(keys_.size()); }
   int vertexCount() const { return static_cast<int>(keys_.front().rows()); }
   int threads() const { return threads_; }
@@ -99,7 +119,7 @@ class Interpolator {
  private:
   struct Frame;
   struct State;
-  Frame makeFrame(const Eigen::VectorXd& w) const;
+  Frame makeFrame(const Eigen::VectorXd& w, const VertexSprings* springs) const;
   void evaluateState(const Frame& frame, State& state) const;
   // Only what placement groups need: active cohesive pairs and non-overlap contacts.
   void evaluateLinks(const Frame& frame, State& state) const;
@@ -109,9 +129,10 @@ class Interpolator {
   // step. On kAccepted the new iterate is in candidate; plain is scratch.
   enum class Step { kAccepted, kRefactorized, kStalled };
   Step step(const Frame& frame, const State& s, State& candidate, Eigen::MatrixX2d& plain, InterpolationResult& result);
-  void ensureFactorization(const Eigen::VectorXd& w, const std::vector<char>& active, InterpolationResult& result);
-  void refactorize(const Eigen::VectorXd& w, const std::vector<char>& active, InterpolationResult& result);
-  Eigen::SparseMatrix<double> globalMatrix(const Eigen::VectorXd& w, const std::vector<char>& active) const;
+  bool springsMatch(const Eigen::VectorXd& springs) const;
+  void ensureFactorization(const Frame& frame, const std::vector<char>& active, InterpolationResult& result);
+  void refactorize(const Frame& frame, const std::vector<char>& active, InterpolationResult& result);
+  Eigen::SparseMatrix<double> globalMatrix(const Frame& frame, const std::vector<char>& active) const;
 
   InterpolationParams params_;
   SolverOptions options_;
@@ -126,9 +147,12 @@ class Interpolator {
   std::vector<std::pair<int, int>> groupLinks_;  // the links groups_ was last built from
   CholeskyPreconditioner factor_;
   AndersonAcceleration anderson_;          // history kept across frames
+  bool factorValid_ = false;               // H factorized for factorWeights_, factorActive_, factorSprings_
   Eigen::VectorXd factorWeights_;
+  Eigen::VectorXd factorSprings_;          // c_v in H (empty: none)
   std::vector<char> factorActive_;
   double gradientFloor_ = 0;               // absolute |g|_inf below which a start is converged
+  double stiffnessScale_ = 0;              // see stiffnessScale()
 };
 
 // Checks interpolation weights: m entries, finite, non-negative, summing to 1 (within 1e-6).

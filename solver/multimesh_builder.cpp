@@ -4,6 +4,7 @@
 #include "plane_geometry.h"
 #include "png_image.h"
 #include "shared_boundary.h"
+#include "stiffness_paint.h"
 
 #include <Eigen/SparseCholesky>
 #include <algorithm>
@@ -165,7 +166,7 @@ Attempt mapKeys(const Scene& scene, const SharedBoundary& boundary, const Refere
                           smallestTriangleArea(mesh.triangles, positions[k]).first});
     out.multimesh->addKey(positions[k], std::move(pairs), outlineVertices(boundary, mesh, k));
   }
-  for (int t = 0; t < out.multimesh->triangleCount(); ++t) out.multimesh->setStiffness(t, scene.solver.kappa);
+  paintStiffness(*out.multimesh, scene.stiffness, scene.solver.kappa);
   return out;
 }
 

@@ -2,6 +2,8 @@
 
 #include "atomic_file.h"
 #include "error.h"
+#include "json_fields.h"
+#include "scene_animation.h"
 
 #include <algorithm>
 #include <cmath>
@@ -14,56 +16,7 @@ using nlohmann::json;
 
 namespace {
 
-// Where a value sits, for messages: the file, then the path of fields and names inside it.
-struct Context {
-  std::string file, where;
-
-  Context in(const std::string& part) const { return {file, where.empty() ? part : where + ": " + part}; }
-  InputError error(const std::string& what) const {
-    return InputError(file + ": " + (where.empty() ? "" : where + ": ") + what);
-  }
-};
-
-void requireObject(const json& j, const Context& at, const std::set<std::string>& allowed) {
-  if (!j.is_object()) throw at.error("must be a JSON object");
-  for (auto it = j.begin(); it != j.end(); ++it)
-    if (!allowed.count(it.key())) {
-      std::string list;
-      for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
-      throw at.error("unknown field " + inQuotes(it.key()) + " (expected one of: " + list + ")");
-    }
-}
-
-// A number in [lo, hi] (open at lo when loOpen), or the default when the field is absent.
-double number(const json& object, const std::string& key, double fallback, const Context& at, double lo, double hi,
-              bool loOpen = false) {
-  if (!object.contains(key)) return fallback;
-  const json& v = object[key];
-  const Context here = at.in(key);
-  if (!v.is_number()) throw here.error("must be a number");
-  const double x = v.get<double>();
-  const bool low = loOpen ? x > lo : x >= lo;
-  if (!std::isfinite(x) || !low || x > hi) {
-    const std::string range = (loOpen ? "(" : "[") + json(lo).dump() + ", " + json(hi).dump() + "]";
-    throw here.error(json(x).dump() + " is out of range " + range);
-  }
-  return x;
-}
-
-std::string text(const json& object, const std::string& key, const Context& at) {
-  if (!object.contains(key)) throw at.error("missing field " + inQuotes(key));
-  const json& v = object[key];
-  if (!v.is_string() || v.get<std::string>().empty()) throw at.in(key).error("must be a non-empty string");
-  return v.get<std::string>();
-}
-
-Eigen::Vector2d point(const json& v, const Context& at) {
-  if (!v.is_array() || v.size() != 2 || !v[0].is_number() || !v[1].is_number())
-    throw at.error("must be a point [x, y] in drawing pixels");
-  const Eigen::Vector2d p(v[0].get<double>(), v[1].get<double>());
-  if (!p.allFinite()) throw at.error("must be finite");
-  return p;
-}
+using namespace json_fields;
 
 CutKind cutKind(const json& cut, const Context& at) {
   const std::string kind = text(cut, "kind", at);
@@ -143,10 +96,7 @@ void parseSolver(const json& j, const Context& at, SceneSolverParams& s) {
   s.tau = number(j, "tau", s.tau, at, 0, 1e6, true);
   s.alpha = number(j, "alpha", s.alpha, at, 0, 1);
   s.kappa = number(j, "kappa", s.kappa, at, 0, 1e6, true);
-  if (j.contains("non_overlap")) {
-    if (!j["non_overlap"].is_boolean()) throw at.in("non_overlap").error("must be true or false");
-    s.nonOverlap = j["non_overlap"].get<bool>();
-  }
+  s.nonOverlap = boolean(j, "non_overlap", s.nonOverlap, at);
 }
 
 // Every key places the same plain features; a cut's features are placed exactly by the keys where
@@ -225,7 +175,8 @@ Scene parseScene(const std::string& source, const std::string& path) {
   } catch (const json::parse_error& e) {
     throw at.error(std::string("malformed JSON: ") + e.what());
   }
-  requireObject(j, at, {"version", "reference", "edge_length", "tracing", "solver", "keys", "timeline"});
+  requireObject(j, at,
+                {"version", "reference", "edge_length", "tracing", "solver", "keys", "timeline", "dynamics", "stiffness"});
   if (!j.contains("version") || !j["version"].is_number_integer() || j["version"].get<int>() != 1)
     throw at.in("version").error("must be 1 (the only scene format version so far)");
   Scene scene;
@@ -245,8 +196,12 @@ Scene parseScene(const std::string& source, const std::string& path) {
   scene.edgeLength = number(j, "edge_length", scene.edgeLength, at, 0.5, 1e6);
   if (j.contains("tracing")) parseTracing(j["tracing"], at.in("tracing"), scene.tracing);
   if (j.contains("solver")) parseSolver(j["solver"], at.in("solver"), scene.solver);
-  if (j.contains("timeline")) scene.timeline = j["timeline"];
   checkCorrespondence(scene, at);
+  std::vector<std::string> names;
+  for (const KeySpec& key : scene.keys) names.push_back(key.name);
+  scene.timeline = j.contains("timeline") ? parseTimeline(j["timeline"], names, at.file) : defaultTimeline(names);
+  if (j.contains("dynamics")) scene.dynamics = parseDynamics(j["dynamics"], at.in("dynamics"));
+  if (j.contains("stiffness")) scene.stiffness = parseStiffness(j["stiffness"], at.in("stiffness"), names, folder.string());
   return scene;
 }
 

@@ -1,14 +1,16 @@
 // The scene file: key drawings and the annotations that tie them together (features, cuts),
-// the reference key, the target edge length, tracing and solver parameters, and the timeline
-// (kept as JSON for the animation stage). Format: README.md, "Scene file". Coordinates are drawing
+// the reference key, the target edge length, tracing and solver parameters, the timeline,
+// dynamics and stiffness painting. Format: README.md, "Scene file". Coordinates are drawing
 // pixels, y down; paths are relative to the scene file.
 #pragma once
 
+#include "dynamics.h"
+#include "stiffness_paint.h"
+#include "timeline.h"
 #include "tracing.h"
 
 #include <Eigen/Core>
 #include <map>
-#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -41,7 +43,7 @@ struct SceneSolverParams {
   double lambda = 4000;     // cohesive stiffness (paper eq. 11)
   double tau = 1e-3;        // cohesive threshold, in units of the shape size sqrt(mean key area)
   double alpha = 0.5;       // shear (0) versus stretch (1) resistance of cohesive pairs (eq. 13)
-  double kappa = 1;         // stiffness of every triangle (painting comes with the timeline)
+  double kappa = 1;         // stiffness of every unpainted triangle (see "stiffness")
   bool nonOverlap = false;  // W_O on or off
 };
 
@@ -52,7 +54,9 @@ struct Scene {
   double edgeLength = 8;            // px: target boundary edge length in the reference key
   TracingOptions tracing;
   SceneSolverParams solver;
-  nlohmann::json timeline;          // null when absent
+  Timeline timeline;                // the default timeline (every key, a second apart) when absent
+  DynamicsParams dynamics;          // epsilon = 0 (off) when absent
+  StiffnessPaint stiffness;         // nothing painted when absent
 
   int keyIndex(const std::string& name) const;  // -1 when absent
 };

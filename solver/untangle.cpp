@@ -39,8 +39,9 @@ class WinslowEnergy {
   double evaluate(const Eigen::VectorXd& x, Eigen::VectorXd& gradient, double& minDet) const {
     const int count = static_cast<int>(triangles_.size());
     cornerGradient_.resize(count);
-    double energy = 0, lowest = std::numeric_limits<double>::infinity();
-#pragma omp parallel for reduction(+ : energy) reduction(min : lowest) schedule(static) if (count > 4000)
+    triangleEnergy_.resize(count);
+    double lowest = std::numeric_limits<double>::infinity();
+#pragma omp parallel for reduction(min : lowest) schedule(static) if (count > 4000)
     for (int t = 0; t < count; ++t) {
       const auto& tri = triangles_[t];
       const Eigen::Vector2d p0(x[2 * tri[0]], x[2 * tri[0] + 1]);
@@ -53,13 +54,16 @@ class WinslowEnergy {
       const double root = std::sqrt(eps_ * eps_ + d * d);
       const double c = 0.5 * (d + root), dc = 0.5 * (1 + d / root);
       const double f = j.squaredNorm() / c, g = (d * d + 1) / c;
-      energy += weight_[t] * ((1 - theta_) * f + theta_ * g);
+      triangleEnergy_[t] = weight_[t] * ((1 - theta_) * f + theta_ * g);
       Eigen::Matrix2d cof;  // d(det J) / dJ
       cof << j(1, 1), -j(1, 0), -j(0, 1), j(0, 0);
       const Eigen::Matrix2d dj =
           weight_[t] * ((1 - theta_) * (2 / c * j - f * dc / c * cof) + theta_ * (2 * d / c - g * dc / c) * cof);
       cornerGradient_[t] = dj * inverse_[t].transpose();  // columns: d energy / d corner 1, corner 2
     }
+    // Serial sums: bit-identical from run to run (a reduction adds in thread arrival order).
+    double energy = 0;
+    for (double e : triangleEnergy_) energy += e;
     gradient.setZero(x.size());
     for (int t = 0; t < count; ++t) {
       const auto& tri = triangles_[t];
@@ -81,6 +85,7 @@ class WinslowEnergy {
   std::vector<Eigen::Matrix2d> inverse_;  // per triangle: (scaled rest edge matrix)^-1, 2 x 2
   std::vector<double> weight_;            // per triangle: rest area over total rest area
   mutable std::vector<Eigen::Matrix2d> cornerGradient_;  // per triangle: scratch of evaluate(), 2 x 2
+  mutable std::vector<double> triangleEnergy_;           // per triangle: scratch of evaluate()
 };
 
 // L-BFGS with a backtracking Armijo line search; free coordinates only (mask 1 = free).

@@ -1,7 +1,9 @@
 #include "shape_checks.h"
 
+#include "deformation_energy.h"
 #include "plane_geometry.h"
 
+#include <Eigen/LU>
 #include <limits>
 
 namespace test {
@@ -42,6 +44,21 @@ double distanceToBoundary(const std::vector<std::array<int, 2>>& edges, const Ei
   double best = std::numeric_limits<double>::infinity();
   for (const auto& [a, b] : edges) best = std::min(best, distanceToSegment(x.row(a), x.row(b), p));
   return best;
+}
+
+double arapDistortion(const ib::Multimesh& mesh, const Eigen::MatrixX2d& x, const Eigen::VectorXd& w, int triangle) {
+  const ib::Triangle t = mesh.triangles()[triangle];
+  Eigen::Matrix2d D;
+  D << x(t[1], 0) - x(t[0], 0), x(t[2], 0) - x(t[0], 0), x(t[1], 1) - x(t[0], 1), x(t[2], 1) - x(t[0], 1);
+  double total = 0;
+  for (int i = 0; i < mesh.keyCount(); ++i) {
+    const Eigen::MatrixX2d X = mesh.keyPositions(i);
+    Eigen::Matrix2d rest;
+    rest << X(t[1], 0) - X(t[0], 0), X(t[2], 0) - X(t[0], 0), X(t[1], 1) - X(t[0], 1), X(t[2], 1) - X(t[0], 1);
+    const Eigen::Matrix2d F = D * rest.inverse();
+    total += w(i) * (F - ib::closestRotation(F)).squaredNorm();
+  }
+  return total;
 }
 
 }  // namespace test

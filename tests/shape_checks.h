@@ -1,4 +1,4 @@
-// Geometric checks shared by the multimesh and Comesh tests.
+// Geometric checks shared by the multimesh, Comesh, interpolation and animation tests.
 #pragma once
 
 #include "key_shape.h"
@@ -21,5 +21,9 @@ std::vector<std::array<int, 2>> boundaryEdges(const ib::Multimesh& mesh);
 // Distance from p to the nearest boundary segment of the mesh at positions x.
 double distanceToBoundary(const std::vector<std::array<int, 2>>& edges, const Eigen::MatrixX2d& x,
                           const Eigen::Vector2d& p);
+
+// ARAP distortion of one triangle at x (n x 2): sum_i w_i |F_i - R_i|_F^2 over the keys, with
+// F_i = D(x) D(X_i)^{-1} and R_i its closest rotation; unweighted by kappa and area.
+double arapDistortion(const ib::Multimesh& mesh, const Eigen::MatrixX2d& x, const Eigen::VectorXd& w, int triangle);
 
 }  // namespace test

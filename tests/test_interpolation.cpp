@@ -1,6 +1,7 @@
 #include "error.h"
 #include "fixtures.h"
 #include "interpolator.h"
+#include "shape_checks.h"
 
 #include <Eigen/Dense>
 #include <catch2/catch.hpp>
@@ -36,28 +37,10 @@ double relativeAngle(const Eigen::MatrixX2d& x, const Eigen::MatrixX2d& y) {
   return std::atan2(cross, dot);
 }
 
-// Mean distortion sum_i w_i |F_i - R|^2 over triangles in [first, last), unweighted by kappa.
-double distortion(const Multimesh& mesh, const Eigen::MatrixX2d& x, const Eigen::VectorXd& w, int first, int last) {
-  const auto tris = mesh.triangles();
-  double total = 0;
-  for (int i = 0; i < mesh.keyCount(); ++i) {
-    const Eigen::MatrixX2d X = mesh.keyPositions(i);
-    for (int k = first; k < last; ++k) {
-      const auto& t = tris[k];
-      Eigen::Matrix2d D, Dr;
-      D << x(t[1], 0) - x(t[0], 0), x(t[2], 0) - x(t[0], 0), x(t[1], 1) - x(t[0], 1), x(t[2], 1) - x(t[0], 1);
-      Dr << X(t[1], 0) - X(t[0], 0), X(t[2], 0) - X(t[0], 0), X(t[1], 1) - X(t[0], 1), X(t[2], 1) - X(t[0], 1);
-      const Eigen::Matrix2d F = D * Dr.inverse();
-      total += w(i) * (F - closestRotation(F)).squaredNorm();
-    }
-  }
-  return total / (last - first);
-}
-
 }  // namespace
 
 TEST_CASE("interpolation: w = e_i reproduces key i where it was drawn, on every fixture") {
-  for (const auto& f : test::allFixtures()) {
+  for (const auto& f : ib::test::allFixtures()) {
     const int m = f.mesh.keyCount();
     Interpolator solver(f.mesh, {}, tight());
     for (int i = 0; i < m; ++i) {
@@ -72,7 +55,7 @@ TEST_CASE("interpolation: w = e_i reproduces key i where it was drawn, on every 
 }
 
 TEST_CASE("interpolation: keys related by a rigid motion give rigid inbetweens between the placements") {
-  const auto f = test::strip(200, 1);
+  const auto f = ib::test::strip(200, 1);
   const Eigen::MatrixX2d X0 = f.mesh.keyPositions(0);
   const double angle = 1.2;
   Eigen::Matrix2d R;
@@ -104,7 +87,7 @@ TEST_CASE("interpolation: keys related by a rigid motion give rigid inbetweens b
 }
 
 TEST_CASE("interpolation: inbetweens move continuously with w, without drift on a round trip") {
-  const auto f = test::strip(300, 2);
+  const auto f = ib::test::strip(300, 2);
   Interpolator solver(f.mesh, {}, SolverOptions{});
   std::vector<Eigen::MatrixX2d> forward;
   InterpolationResult r = solver.solve(unit(2, 0));
@@ -146,7 +129,7 @@ TEST_CASE("interpolation: stiffer triangles deform less") {
   const auto measure = [&](const Multimesh& mesh, const std::vector<int>& which) {
     const Eigen::MatrixX2d x = Interpolator(mesh, {}, tight()).solve(w).x;
     double total = 0;
-    for (int k : which) total += distortion(mesh, x, w, k, k + 1);
+    for (int k : which) total += ::test::arapDistortion(mesh, x, w, k);
     return total / which.size();
   };
   const double uniformLeft = measure(uniform, left), uniformRight = measure(uniform, right);
@@ -161,7 +144,7 @@ TEST_CASE("interpolation: stiffer triangles deform less") {
 TEST_CASE("interpolation: analytic gradients agree with central finite differences") {
   // ARAP, placement tie and cohesive terms, including P's dependence on x when alpha != 1/2.
   const double alpha = GENERATE(0.2, 0.5, 0.9);
-  auto f = test::gluedSquares(5, 1.0, 0.3);
+  auto f = ib::test::gluedSquares(5, 1.0, 0.3);
   InterpolationParams params;
   params.cohesive.alpha = alpha;
   params.cohesive.tau = 1e9;
@@ -185,7 +168,7 @@ TEST_CASE("interpolation: analytic gradients agree with central finite differenc
 }
 
 TEST_CASE("interpolation: bad weights and wrong-sized positions are input errors, never NaN output") {
-  const auto f = test::strip(100, 2);
+  const auto f = ib::test::strip(100, 2);
   Interpolator solver(f.mesh, {}, SolverOptions{});
   REQUIRE_THROWS_WITH(solver.solve(Eigen::Vector3d(0.2, 0.3, 0.5)), Catch::Contains("expected 2 values"));
   REQUIRE_THROWS_WITH(solver.solve(Eigen::Vector2d(1.5, -0.5)), Catch::Contains("w[1]") && Catch::Contains("negative"));
@@ -200,7 +183,7 @@ TEST_CASE("interpolation: bad weights and wrong-sized positions are input errors
 }
 
 TEST_CASE("interpolation: out-of-range parameters name the parameter") {
-  const auto f = test::strip(100, 2);
+  const auto f = ib::test::strip(100, 2);
   InterpolationParams p;
   p.cohesive.alpha = 1.5;
   REQUIRE_THROWS_WITH(Interpolator(f.mesh, p, SolverOptions{}), Catch::Contains("alpha"));
@@ -219,7 +202,7 @@ TEST_CASE("interpolation: out-of-range parameters name the parameter") {
 
 TEST_CASE("interpolation: keys with zero weight do not change the inbetween") {
   // The 4-key strip's first two keys are the 2-key strip.
-  const auto two = test::strip(400, 2), four = test::strip(400, 4);
+  const auto two = ib::test::strip(400, 2), four = ib::test::strip(400, 4);
   const InterpolationResult a = Interpolator(two.mesh, {}, tight()).solve(Eigen::Vector2d(0.3, 0.7));
   const InterpolationResult b = Interpolator(four.mesh, {}, tight()).solve(Eigen::Vector4d(0.3, 0.7, 0, 0));
   // Only the weak placement tie sees the extra keys (through the shape size that normalizes it).

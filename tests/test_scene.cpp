@@ -54,6 +54,36 @@ TEST_CASE("scene: a valid scene reads with its keys, features, cuts, parameters 
   CHECK(s.solver.alpha == 0.3);
   CHECK(s.solver.kappa == 1);  // default
   CHECK(s.solver.nonOverlap);
+  // Absent animation fields: every key a second apart, no dynamics, nothing painted.
+  REQUIRE(s.timeline.marks().size() == 2);
+  CHECK(s.timeline.marks()[1].time == 1);
+  CHECK(!s.dynamics.enabled());
+  CHECK(s.stiffness.empty());
+}
+
+TEST_CASE("scene: the timeline, dynamics and stiffness painting read with their values and resolved paths") {
+  json j = squareArch();
+  j["timeline"] = json::parse(R"({"fps": 30, "marks": [{"time": 0, "key": "arch", "ease": "hold"},
+                                                       {"time": 2, "weights": {"square": 1, "arch": 1}}]})");
+  j["dynamics"] = json::parse(R"({"epsilon": 0.4, "gravity": [0, 9.8], "mu": 1.5, "gust": 0.2})");
+  j["stiffness"] = json::parse(R"({"range": [0.5, 8], "image": {"key": "arch", "path": "stiff.png"},
+      "regions": [{"name": "head", "key": "square", "polygon": [[0, 0], [10, 0], [10, 10]], "kappa": 4}]})");
+  const Scene s = parseScene(j.dump(), "scenes/square-arch.json");
+  CHECK(s.timeline.fps() == 30);
+  CHECK(s.timeline.weights(0) == Eigen::Vector2d(0, 1));
+  CHECK(s.timeline.weights(2) == Eigen::Vector2d(0.5, 0.5));
+  CHECK(s.timeline.segments()[0].easing.kind == EaseKind::kHold);
+  CHECK(s.dynamics.epsilon == 0.4);
+  CHECK(s.dynamics.gravity == Eigen::Vector2d(0, 9.8));
+  CHECK(s.dynamics.mu == 1.5);
+  CHECK(s.dynamics.gust == 0.2);
+  CHECK(s.stiffness.soft == 0.5);
+  CHECK(s.stiffness.stiff == 8);
+  CHECK(s.stiffness.image == "scenes/stiff.png");
+  CHECK(s.stiffness.imageKey == 1);
+  REQUIRE(s.stiffness.regions.size() == 1);
+  CHECK(s.stiffness.regions[0].key == 0);
+  CHECK(s.stiffness.regions[0].kappa == 4);
 }
 
 TEST_CASE("scene: a key that does not place a cut's feature is named with the cut and the feature") {
@@ -85,6 +115,17 @@ TEST_CASE("scene: every malformed or inconsistent field is an input error naming
       {[](json& j) { j["keys"][1]["features"]["gap.tip"] = {1, 1}; }, "feature \"gap.tip\" names no cut"},
       {[](json& j) { j["keys"][1]["cuts"] = j["keys"][0]["cuts"]; }, "cut \"split\": is closed in every key"},
       {[](json& j) { j["keys"] = json::array(); }, "keys: needs at least one key"},
+      {[](json& j) { j["timeline"] = {{"marks", {{{"time", 0}, {"key", "circle"}}}}}; },
+       "timeline: mark 1: key: \"circle\" is not a key of this scene"},
+      {[](json& j) { j["dynamics"] = {{"epsilon", 2}}; }, "dynamics: epsilon: 2"},
+      {[](json& j) { j["dynamics"] = {{"gravity", 9.8}}; }, "dynamics: gravity: must be a point [x, y] in shape sizes"},
+      {[](json& j) { j["dynamics"] = {{"drag", 1}}; }, "dynamics: unknown field \"drag\""},
+      {[](json& j) { j["stiffness"] = {{"range", {5, 1}}}; }, "stiffness: range: needs 0 < soft < stiff"},
+      {[](json& j) { j["stiffness"] = {{"image", {{"key", "arch"}}}}; }, "stiffness: image: missing field \"path\""},
+      {[](json& j) { j["stiffness"] = {{"image", {{"key", "circle"}, {"path", "s.png"}}}}; },
+       "stiffness: image: key: \"circle\" is not a key"},
+      {[](json& j) { j["stiffness"] = {{"regions", {{{"name", "head"}, {"key", "arch"}, {"polygon", {{0, 0}, {1, 1}}}}}}}; },
+       "stiffness: region: \"head\": needs \"polygon\": at least 3 points"},
   };
   for (const auto& [edit, expected] : cases) {
     json j = squareArch();
