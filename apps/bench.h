@@ -12,4 +12,7 @@ int runBench(const std::vector<std::string>& args);
 // `inbetween bench comesh ...` (bench_comesh.cpp): args after "comesh".
 int runBenchComesh(const std::vector<std::string>& args);
 
+// `inbetween bench anim ...` (bench_anim.cpp): args after "anim".
+int runBenchAnim(const std::vector<std::string>& args);
+
 }  // namespace ib

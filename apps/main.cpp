@@ -20,6 +20,7 @@ constexpr const char* kUsage =
     "  mesh SCENE     build and optimize the multimesh of a scene (see `inbetween mesh --help`)\n"
     "  bench interp   benchmark the interpolation solver; one JSON object per case\n"
     "  bench comesh   benchmark Comesh Optimization; one JSON object per case\n"
+    "  bench anim     benchmark playing every bundled scene's timeline; one JSON object per case\n"
     "\n"
     "options:\n"
     "  -h, --help     show this help (also: inbetween COMMAND --help)\n";

@@ -2,6 +2,7 @@
 
 #include "atomic_file.h"
 #include "error.h"
+#include "interpolator.h"
 #include "json_fields.h"
 #include "scene_animation.h"
 
@@ -203,6 +204,15 @@ Scene parseScene(const std::string& source, const std::string& path) {
   if (j.contains("dynamics")) scene.dynamics = parseDynamics(j["dynamics"], at.in("dynamics"));
   if (j.contains("stiffness")) scene.stiffness = parseStiffness(j["stiffness"], at.in("stiffness"), names, folder.string());
   return scene;
+}
+
+InterpolationParams interpolationParams(const SceneSolverParams& solver) {
+  InterpolationParams p;
+  p.cohesive.lambda = solver.lambda;
+  p.cohesive.tau = solver.tau;
+  p.cohesive.alpha = solver.alpha;
+  p.nonOverlap = solver.nonOverlap;
+  return p;
 }
 
 Scene loadScene(const std::string& path) { return parseScene(readFile(path), path); }

@@ -61,6 +61,10 @@ struct Scene {
   int keyIndex(const std::string& name) const;  // -1 when absent
 };
 
+struct InterpolationParams;  // interpolator.h
+// The interpolation energies' parameters (lambda, tau, alpha, non-overlap) the scene asks for.
+InterpolationParams interpolationParams(const SceneSolverParams& solver);
+
 // Reads and validates a scene: every problem is an InputError naming the file, the field and the
 // key, e.g. `walk.json: key "arch": cut "split": needs at least 2 points`. Drawings are not read.
 Scene loadScene(const std::string& path);

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <nlohmann/json.hpp>
 
 namespace test {
 
@@ -30,7 +31,16 @@ ExampleScene squareArchStretch() {
      "features": {"top-left": [28, 28], "top-right": [100, 28], "bottom-right": [100, 100], "bottom-left": [28, 100]}},
     {"name": "arch", "drawing": "arch.png",
      "features": {"top-left": [16, 20], "top-right": [112, 20], "bottom-right": [112, 108], "bottom-left": [16, 108]}}
-  ]
+  ],
+  "timeline": {"fps": 24, "loop": true, "marks": [
+    {"time": 0, "key": "square", "ease": "ease-in"},
+    {"time": 0.5, "key": "arch", "ease": "hold"},
+    {"time": 1.25, "key": "arch", "ease": "ease-in-out"},
+    {"time": 2, "key": "square"}
+  ]},
+  "dynamics": {"epsilon": 0.6, "gravity": [0, 3], "mu": 1},
+  "stiffness": {"regions": [{"name": "top", "key": "square", "polygon": [[20, 20], [108, 20], [108, 50], [20, 50]],
+                             "kappa": 4}]}
 })",
           {{"square.png", drawShape(kSize, kSize, square())}, {"arch.png", drawShape(kSize, kSize, arch())}}};
 }
@@ -46,7 +56,12 @@ ExampleScene squareArchNotch() {
      "cuts": [{"name": "split", "kind": "notch", "points": [[64, 100], [64, 64]]}]},
     {"name": "arch", "drawing": "arch.png",
      "features": {"top": [64, 20], "split.left": [46, 108], "split.right": [82, 108], "split.tip": [64, 56]}}
-  ]
+  ],
+  "timeline": {"fps": 24, "loop": true, "marks": [
+    {"time": 0, "key": "square", "ease": "ease-in-out"},
+    {"time": 1, "key": "arch", "ease": {"cubic_bezier": [0.3, 0, 0.2, 1]}},
+    {"time": 2, "key": "square"}
+  ]}
 })",
           {{"square.png", drawShape(kSize, kSize, square())}, {"arch.png", drawShape(kSize, kSize, arch())}}};
 }
@@ -130,6 +145,12 @@ std::vector<std::pair<std::string, std::string>> writeBadScenes(const std::strin
       {"name": "arch", "drawing": ")" + archPng + R"(", "features": {)" + archFeatures + R"(}}]})";
   };
   const std::string archOk = R"("top": [64, 20], "split.left": [46, 108], "split.right": [82, 108], "split.tip": [64, 56])";
+  // The good scene with one more top-level field.
+  const auto with = [&](const std::string& field, const std::string& value) {
+    nlohmann::json j = nlohmann::json::parse(scene(square, "[64, 64]", archOk));
+    j[field] = nlohmann::json::parse(value);
+    return j.dump();
+  };
   const std::vector<std::tuple<std::string, std::string, std::string>> bad = {
       {"missing-drawing", scene("no-such-drawing.png", "[64, 64]", archOk), "no-such-drawing.png"},
       {"corrupt-png", scene("corrupt.png", "[64, 64]", archOk), "corrupt.png"},
@@ -146,6 +167,11 @@ std::vector<std::pair<std::string, std::string>> writeBadScenes(const std::strin
       {"loops-do-not-match", scene(square, "[64, 64]",
                                    R"("top": [64, 20], "split.left": [82, 108], "split.right": [46, 108], "split.tip": [64, 56])"),
        "loops do not match"},
+      {"timeline-unknown-key", with("timeline", R"({"marks": [{"time": 0, "key": "circle"}]})"),
+       "timeline: mark 1: key: \"circle\" is not a key"},
+      {"dynamics-out-of-range", with("dynamics", R"({"epsilon": 3})"), "dynamics: epsilon: 3"},
+      {"missing-stiffness-image", with("stiffness", R"({"image": {"key": "square", "path": "no-such-stiffness.png"}})"),
+       "no-such-stiffness.png"},
   };
   std::vector<std::pair<std::string, std::string>> files;
   for (const auto& [name, text, message] : bad) {

@@ -1,0 +1,100 @@
+// `inbetween bench anim`: the frame stream (timeline, warm starts, dynamics) over bundled scenes,
+// one JSON line per scene.
+#include "bench.h"
+
+#include "cli.h"
+#include "comesh.h"
+#include "error.h"
+#include "frame_stream.h"
+#include "multimesh_builder.h"
+#include "progress.h"
+#include "stiffness_paint.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+
+namespace ib {
+
+namespace {
+
+constexpr const char* kUsage =
+    "usage: inbetween bench anim [--assets DIR] [--comesh] [--threads N]\n"
+    "\n"
+    "Plays every scene in DIR (each DIR/NAME/scene.json) through its timeline with the frame stream\n"
+    "every front end uses: warm starts, and dynamics where the scene asks for them. One JSON line per\n"
+    "scene: vertices, keys, frames, dynamics (on/off), ms_per_frame (mean), max_ms_per_frame,\n"
+    "iterations_per_frame (mean), converged (share of frames), max_deviation (shape sizes from plain\n"
+    "interpolation).\n"
+    "\n"
+    "  --assets DIR   folder of scenes (default: the source tree's assets/)\n"
+    "  --comesh       run Comesh Optimization before playing (default: the initial map)\n"
+    "  --threads N    solver threads, 0 = all cores (default 0)\n";
+
+nlohmann::json playScene(const std::filesystem::path& file, bool comesh, int threads, cli::Progress& progress) {
+  const std::string name = file.parent_path().filename().string();
+  progress.update(name + ": building the multimesh", 0);
+  const Scene scene = loadScene(file.string());
+  BuiltScene built = buildMultimesh(scene, MultimeshBuildOptions{});
+  Multimesh mesh = comesh ? comeshOptimize(*built.multimesh, &built.boundary, {}, nullptr) : *built.multimesh;
+  if (comesh) paintStiffness(mesh, scene.stiffness, scene.solver.kappa);
+  SolverOptions options;
+  options.threads = threads;
+  FrameStream stream(mesh, scene.timeline, interpolationParams(scene.solver), options, scene.dynamics);
+  double total = 0, slowest = 0, deviation = 0;
+  long iterations = 0;
+  int converged = 0;
+  while (!stream.done()) {
+    const AnimationFrame frame = stream.next();
+    total += frame.milliseconds;
+    slowest = std::max(slowest, frame.milliseconds);
+    deviation = std::max(deviation, frame.deviation);
+    iterations += frame.iterations;
+    converged += frame.converged;
+    progress.update(name + ": frame " + std::to_string(frame.index + 1) + " of " + std::to_string(stream.frameCount()),
+                    (frame.index + 1.0) / stream.frameCount());
+  }
+  const int frames = stream.frameCount();
+  return {{"bench", "anim"},
+          {"scene", name},
+          {"vertices", mesh.vertexCount()},
+          {"keys", mesh.keyCount()},
+          {"frames", frames},
+          {"dynamics", scene.dynamics.enabled()},
+          {"ms_per_frame", total / frames},
+          {"max_ms_per_frame", slowest},
+          {"iterations_per_frame", static_cast<double>(iterations) / frames},
+          {"converged", static_cast<double>(converged) / frames},
+          {"max_deviation", deviation}};
+}
+
+}  // namespace
+
+int runBenchAnim(const std::vector<std::string>& args) {
+  const cli::Arguments a("bench anim", args, {"assets", "threads"}, {"help", "comesh"});
+  if (a.flag("help")) {
+    std::fputs(kUsage, stdout);
+    return 0;
+  }
+  if (!a.positional().empty()) throw InputError("bench anim: unexpected argument '" + a.positional()[0] + "'");
+  const std::filesystem::path assets = a.value("assets", INBETWEEN_ASSETS);
+  const int threads = cli::integerList(a.value("threads", "0"), "threads", 0, 256).front();
+  if (!std::filesystem::is_directory(assets)) throw InputError("bench anim: --assets: " + assets.string() + " is not a folder");
+  std::vector<std::filesystem::path> scenes;
+  for (const auto& entry : std::filesystem::directory_iterator(assets))
+    if (std::filesystem::exists(entry.path() / "scene.json")) scenes.push_back(entry.path() / "scene.json");
+  std::sort(scenes.begin(), scenes.end());
+  if (scenes.empty()) throw InputError("bench anim: --assets: no NAME/scene.json in " + assets.string());
+  for (const auto& file : scenes) {
+    cli::Progress progress;
+    const nlohmann::json line = playScene(file, a.flag("comesh"), threads, progress);
+    progress.finish();
+    std::printf("%s\n", line.dump().c_str());
+    std::fflush(stdout);
+  }
+  return 0;
+}
+
+}  // namespace ib
