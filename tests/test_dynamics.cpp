@@ -169,3 +169,26 @@ TEST_CASE("dynamics: out-of-range parameters and a timeline for other keys are i
   CHECK_THAT(message(d, t), Catch::Contains("dynamics: gravity"));
   CHECK_THAT(message({}, keyTimeline({{0, 0}, {1, 2}}, 3, "linear")), Catch::Contains("timeline: has weights for 3 keys"));
 }
+
+TEST_CASE("dynamics: vertex springs towards the plain inbetween leave it, springs towards a moved copy move it rigidly") {
+  const auto f = test::strip(300, 2);
+  SolverOptions tight;
+  tight.relativeTolerance = 1e-9;
+  tight.maxIterations = 2000;
+  const Eigen::Vector2d w(0.4, 0.6);
+  const Eigen::MatrixX2d plain = Interpolator(f.mesh, {}, tight).solve(w).x;
+  Interpolator solver(f.mesh, {}, tight);
+  VertexSprings springs;
+  springs.stiffness = Eigen::VectorXd::Constant(f.mesh.vertexCount(), 0.3 * solver.stiffnessScale());
+  springs.target = plain;
+  const Eigen::MatrixX2d same = solver.solve(w, nullptr, &springs).x;
+  CHECK((same - plain).rowwise().norm().maxCoeff() < 1e-5 * f.size);
+  // W_I does not see translation, so springs to a translated inbetween translate the result
+  // (up to the placement tie's 1e-5 pull), which rigid placement on the blend would undo.
+  springs.target = plain.rowwise() + Eigen::RowVector2d(0.2 * f.size, -0.1 * f.size);
+  const Eigen::MatrixX2d moved = solver.solve(w, &plain, &springs).x;
+  CHECK((moved - springs.target).rowwise().norm().maxCoeff() < 1e-3 * f.size);
+  // Bad springs are input errors.
+  springs.stiffness(0) = -1;
+  CHECK_THROWS_AS(solver.solve(w, nullptr, &springs), InputError);
+}
