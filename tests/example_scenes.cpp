@@ -3,6 +3,7 @@
 #include "atomic_file.h"
 #include "drawings.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -130,6 +131,14 @@ void writeScene(const ExampleScene& scene, const std::string& folder) {
   std::filesystem::create_directories(dir);
   ib::writeFileAtomically((dir / "scene.json").string(), scene.json);
   for (const auto& [file, image] : scene.drawings) ib::writePng((dir / file).string(), image);
+}
+
+std::vector<std::string> bundledSceneFiles(const std::string& folder) {
+  std::vector<std::string> files;
+  for (const auto& entry : std::filesystem::directory_iterator(folder))
+    if (std::filesystem::exists(entry.path() / "scene.json")) files.push_back((entry.path() / "scene.json").string());
+  std::sort(files.begin(), files.end());
+  return files;
 }
 
 std::vector<std::pair<std::string, std::string>> writeBadScenes(const std::string& folder) {

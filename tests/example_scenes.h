@@ -34,6 +34,9 @@ ExampleScene starSequence();
 // Writes FOLDER/NAME/scene.json and its drawings.
 void writeScene(const ExampleScene& scene, const std::string& folder);
 
+// The scene files of the bundled assets (FOLDER/NAME/scene.json), sorted by NAME.
+std::vector<std::string> bundledSceneFiles(const std::string& folder);
+
 // Bad scene files under FOLDER/bad/, each named after its mistake (missing-drawing.json, ...),
 // drawing on FOLDER/square-arch-notch/: returns (file, part of the expected message) pairs.
 std::vector<std::pair<std::string, std::string>> writeBadScenes(const std::string& folder);

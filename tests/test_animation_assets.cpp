@@ -1,20 +1,18 @@
+#include "example_scenes.h"
 #include "frame_stream.h"
 #include "multimesh_builder.h"
 #include "scene.h"
 
 #include <catch2/catch.hpp>
-#include <filesystem>
 
 using namespace ib;
 
 TEST_CASE("animation: every bundled asset plays its timeline with finite frames that hit its keys") {
-  int scenes = 0, withDynamics = 0;
-  for (const auto& entry : std::filesystem::directory_iterator(INBETWEEN_ASSETS)) {
-    const auto file = entry.path() / "scene.json";
-    if (!std::filesystem::exists(file)) continue;
+  const std::vector<std::string> files = test::bundledSceneFiles(INBETWEEN_ASSETS);
+  int withDynamics = 0;
+  for (const std::string& file : files) {
     INFO("asset " << file);
-    ++scenes;
-    const Scene scene = loadScene(file.string());
+    const Scene scene = loadScene(file);
     const BuiltScene built = buildMultimesh(scene, MultimeshBuildOptions{});
     FrameStream stream(*built.multimesh, scene.timeline, interpolationParams(scene.solver), {}, scene.dynamics);
     withDynamics += scene.dynamics.enabled();
@@ -35,6 +33,6 @@ TEST_CASE("animation: every bundled asset plays its timeline with finite frames 
       }
     }
   }
-  CHECK(scenes >= 5);
+  CHECK(files.size() >= 5);
   CHECK(withDynamics >= 1);
 }
