@@ -3,12 +3,10 @@
 #include "bench.h"
 
 #include "cli.h"
-#include "comesh.h"
 #include "error.h"
 #include "frame_stream.h"
-#include "multimesh_builder.h"
 #include "progress.h"
-#include "stiffness_paint.h"
+#include "scene_mesh.h"
 
 #include <nlohmann/json.hpp>
 
@@ -37,9 +35,7 @@ nlohmann::json playScene(const std::filesystem::path& file, bool comesh, int thr
   const std::string name = file.parent_path().filename().string();
   progress.update(name + ": building the multimesh", 0);
   const Scene scene = loadScene(file.string());
-  BuiltScene built = buildMultimesh(scene, MultimeshBuildOptions{});
-  Multimesh mesh = comesh ? comeshOptimize(*built.multimesh, &built.boundary, {}, nullptr) : *built.multimesh;
-  if (comesh) paintStiffness(mesh, scene.stiffness, scene.solver.kappa);
+  const Multimesh mesh = buildSceneMultimesh(scene, comesh, progress, name + ": ", 0);
   SolverOptions options;
   options.threads = threads;
   FrameStream stream(mesh, scene.timeline, interpolationParams(scene.solver), options, scene.dynamics);

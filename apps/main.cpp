@@ -1,7 +1,8 @@
-// The `inbetween` command: a thin front end over the solver (and, later, the engine).
+// The `inbetween` command: a thin front end over the solver and the engine.
 // Exit codes: 0 success, 2 bad input (message names the file, field or option), 1 internal error.
 #include "bench.h"
 #include "mesh_command.h"
+#include "render_command.h"
 #include "error.h"
 
 #include <cstdio>
@@ -18,6 +19,7 @@ constexpr const char* kUsage =
     "\n"
     "commands:\n"
     "  mesh SCENE     build and optimize the multimesh of a scene (see `inbetween mesh --help`)\n"
+    "  render SCENE   render the scene's animation to PNG frames, headless (see `inbetween render --help`)\n"
     "  bench interp   benchmark the interpolation solver; one JSON object per case\n"
     "  bench comesh   benchmark Comesh Optimization; one JSON object per case\n"
     "  bench anim     benchmark playing every bundled scene's timeline; one JSON object per case\n"
@@ -38,6 +40,7 @@ int run(const std::vector<std::string>& args) {
   const std::vector<std::string> rest(args.begin() + 1, args.end());
   if (command == "bench") return ib::runBench(rest);
   if (command == "mesh") return ib::runMesh(rest);
+  if (command == "render") return ib::runRender(rest);
   throw ib::InputError("unknown command '" + command + "' (see `inbetween --help`)");
 }
 

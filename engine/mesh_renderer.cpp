@@ -13,7 +13,7 @@ namespace ib::render {
 
 namespace {
 
-constexpr float kWireframe[4] = {0.05f, 0.05f, 0.05f, 0.55f};  // premultiplied: dark grey, 55% opaque
+constexpr float kWireframe[4] = {0.25f, 0.4f, 0.6f, 0.7f};    // premultiplied: steel blue, 70% opaque
 constexpr float kCohesive[4] = {0.9f, 0.1f, 0.1f, 1.0f};       // red
 constexpr float kFeature[4] = {0.1f, 0.3f, 0.95f, 1.0f};       // blue
 constexpr int kSquareCorners[6][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, -1}, {1, 1}, {-1, 1}};  // two triangles

@@ -1,0 +1,188 @@
+#include "render_command.h"
+
+#include "contact_sheet.h"
+#include "error.h"
+#include "frame_stream.h"
+#include "render_options.h"
+#include "vulkan_check.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <deque>
+#include <filesystem>
+
+namespace ib {
+
+namespace {
+
+constexpr const char* kUsage =
+    "usage: inbetween render SCENE -o DIR [--frames A:B] [--size WxH] [--fps N] [options]\n"
+    "\n"
+    "Plays the scene's timeline and renders every frame headless (Vulkan; lavapipe without a GPU):\n"
+    "each key's drawing textured onto the deforming mesh, blended by the weights. Writes\n"
+    "DIR/frame_NNNN.png (straight alpha) and DIR/contact_sheet.png.\n"
+    "\n"
+    "  -o, --output DIR     folder for the frames, created if missing\n"
+    "  --frames A:B         frames A to B inclusive (or one frame A); default all\n"
+    "  --size WxH           picture size in pixels; default the drawings' size\n"
+    "  --fps N              frame rate; default the scene's timeline's (24 without one)\n"
+    "  --background C       transparent (default), or a colour RRGGBB / RRGGBBAA\n"
+    "  --samples N          multisample anti-aliasing samples (default 4)\n"
+    "  --wireframe          draw the mesh's edges\n"
+    "  --cohesive           draw the cohesive edges of the keys in play, red\n"
+    "  --features           draw the feature vertices, blue\n"
+    "  --onion N            onion skins: N neighbouring frames each side, faded (0..2, default 0)\n"
+    "  --sheet-every K      every K-th frame on the contact sheet (default: at most 36 tiles)\n"
+    "  --mesh FILE          multimesh to use (default: SCENE's .ibmesh from `inbetween mesh` when\n"
+    "                       newer than the scene and drawings, else built now)\n"
+    "  --no-comesh          when building the multimesh, skip Comesh Optimization\n"
+    "  --device D           any (default: a GPU if present, else lavapipe), gpu or cpu\n"
+    "  --validation         run with the Khronos validation layer; any message is an error\n"
+    "  --threads N          solver threads, 0 = all cores (default 0)\n";
+
+namespace fs = std::filesystem;
+
+Timeline withFps(const Timeline& timeline, double fps) {
+  return Timeline(fps, timeline.loops(), timeline.marks(), timeline.segments());
+}
+
+vk::VulkanContext openContext(const RenderOptions& options) {
+  vk::ContextOptions context;
+  context.validation = options.validation;
+  context.device = options.device;
+  try {
+    return vk::VulkanContext(context);
+  } catch (const vk::VulkanError& e) {
+    // No usable driver is a fault of the machine, not of inbetween: say what to install.
+    throw InputError(std::string("render: no usable Vulkan device: ") + e.what() +
+                     " (lavapipe comes with Debian's mesa-vulkan-drivers; see scripts/setup.sh)");
+  }
+}
+
+std::string framePath(const fs::path& dir, int frame) {
+  char name[32];
+  std::snprintf(name, sizeof name, "frame_%04d.png", frame);
+  return (dir / name).string();
+}
+
+}  // namespace
+
+int runRender(const std::vector<std::string>& rawArgs) {
+  std::vector<std::string> args;
+  for (const std::string& a : rawArgs) args.push_back(a == "-o" ? "--output" : a);
+  for (const std::string& a : args)
+    if (a == "--help" || a == "-h") {
+      std::fputs(kUsage, stdout);
+      return 0;
+    }
+  const cli::Arguments arguments("render", args,
+                                 {"output", "frames", "size", "fps", "background", "samples", "onion", "sheet-every", "mesh",
+                                  "device", "threads"},
+                                 {"wireframe", "cohesive", "features", "no-comesh", "validation"});
+  if (arguments.positional().size() != 1) throw InputError("render: needs exactly one SCENE file (see `inbetween render --help`)");
+  const std::string scenePath = arguments.positional()[0];
+  RenderOptions options = parseRenderOptions(arguments);
+  const Scene scene = loadScene(scenePath);
+  std::vector<RgbaImage> drawings;
+  for (const KeySpec& key : scene.keys) drawings.push_back(readPng(key.drawing));
+  const Timeline timeline = options.fps ? withFps(scene.timeline, *options.fps) : scene.timeline;
+  const int frameCount = timeline.frameCount();
+  const std::array<int, 2> range = options.frames.value_or(std::array<int, 2>{0, frameCount - 1});
+  if (range[1] >= frameCount)
+    throw InputError("--frames: the timeline has frames 0.." + std::to_string(frameCount - 1) + ", asked for up to " +
+                     std::to_string(range[1]));
+  const vk::VulkanContext context = openContext(options);  // before the long work: a missing driver fails fast
+  const fs::path dir(options.output);
+  std::error_code error;
+  fs::create_directories(dir, error);
+  if (error || !fs::is_directory(dir)) throw InputError("-o: cannot create the folder " + dir.string());
+
+  cli::Progress progress;
+  options.mesh.progressShare = 0.3;
+  std::string source;
+  const Multimesh mesh = sceneMultimesh(scene, scenePath, options.mesh, progress, &source);
+  int canvasW = 0, canvasH = 0;
+  for (const RgbaImage& d : drawings) {
+    canvasW = std::max(canvasW, d.width);
+    canvasH = std::max(canvasH, d.height);
+  }
+  const std::array<int, 2> size = options.size.value_or(std::array<int, 2>{canvasW, canvasH});
+  options.target.width = size[0];
+  options.target.height = size[1];
+  const render::RenderMesh renderMesh = render::renderMeshOf(mesh, drawings, featureVertices(scene, mesh));
+  render::OffscreenRenderer renderer(context, renderMesh, options.target);
+  const render::ViewBox view = render::fitView({0, 0, double(canvasW), double(canvasH)}, size[0], size[1], 0);
+
+  SolverOptions solver;
+  solver.threads = options.threads;
+  FrameStream stream(mesh, timeline, interpolationParams(scene.solver), solver, scene.dynamics);
+  const int rendered = range[1] - range[0] + 1;
+  const int every = options.sheetEvery > 0 ? options.sheetEvery : (rendered + 35) / 36;
+  const int tileW = std::min(240, size[0]);
+  const int tileH = std::max(1, static_cast<int>(std::lround(double(tileW) * size[1] / size[0])));
+  std::vector<RgbaImage> tiles;
+  std::deque<AnimationFrame> window;  // solved frames around the next one to draw (onion skins)
+  std::deque<int> inFlight;           // frame indices submitted, oldest first
+  int written = 0;
+  const auto started = std::chrono::steady_clock::now();
+  auto collect = [&]() {
+    const int f = inFlight.front();
+    inFlight.pop_front();
+    const RgbaImage image = renderer.take();
+    writePng(framePath(dir, f), image);
+    if ((f - range[0]) % every == 0) tiles.push_back(render::shrink(image, tileW, tileH));
+    ++written;
+    progress.update("rendering frame " + std::to_string(f) + " (" + std::to_string(written) + " of " + std::to_string(rendered) + ")",
+                    0.3 + 0.7 * written / rendered);
+  };
+  auto draw = [&](size_t at) {  // renders window[at], with the frames around it as onion skins
+    const AnimationFrame& frame = window[at];
+    render::FrameDraw request;
+    request.positions = &frame.x;
+    request.weights = frame.weights;
+    request.view = view;
+    request.overlays = options.overlays;
+    for (int d = 1; d <= options.onion; ++d) {
+      const float opacity = 0.35f / d;
+      if (at >= static_cast<size_t>(d)) request.onion.push_back({&window[at - d].x, window[at - d].weights, {1.0f, 0.45f, 0.45f}, opacity});
+      if (at + d < window.size()) request.onion.push_back({&window[at + d].x, window[at + d].weights, {0.45f, 1.0f, 0.45f}, opacity});
+    }
+    renderer.submit(request);
+    inFlight.push_back(frame.index);
+    while (static_cast<int>(inFlight.size()) > 2) collect();
+  };
+  // Frames are solved in order (dynamics and warm starts need every earlier frame); each is drawn
+  // once the `onion` frames after it are solved too.
+  size_t nextToDraw = 0;  // index into window
+  while (!stream.done()) {
+    AnimationFrame frame = stream.next();
+    if (frame.index > range[1] + options.onion) break;
+    if (frame.index < range[0] - options.onion) continue;
+    window.push_back(std::move(frame));
+    while (nextToDraw < window.size() && window[nextToDraw].index + options.onion <= window.back().index) {
+      if (window[nextToDraw].index >= range[0] && window[nextToDraw].index <= range[1]) draw(nextToDraw);
+      ++nextToDraw;
+    }
+    while (nextToDraw > static_cast<size_t>(options.onion)) {  // no longer anyone's onion skin
+      window.pop_front();
+      --nextToDraw;
+    }
+  }
+  for (; nextToDraw < window.size(); ++nextToDraw)
+    if (window[nextToDraw].index >= range[0] && window[nextToDraw].index <= range[1]) draw(nextToDraw);
+  while (!inFlight.empty()) collect();
+  const std::string sheetPath = (dir / "contact_sheet.png").string();
+  writePng(sheetPath, render::contactSheet(tiles, {}));
+  progress.finish();
+  if (options.validation && !context.validationMessages().empty())
+    throw std::runtime_error("render: the validation layer reported: " + context.validationMessages().front());
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  std::printf("%s: rendered frames %d..%d (%dx%d, %g fps timeline) on %s in %.2f s (%.1f frames/s); multimesh %s\n",
+              scenePath.c_str(), range[0], range[1], size[0], size[1], timeline.fps(), context.deviceName().c_str(), seconds,
+              written / seconds, source.c_str());
+  std::printf("wrote %s .. %s and %s\n", framePath(dir, range[0]).c_str(), framePath(dir, range[1]).c_str(), sheetPath.c_str());
+  return 0;
+}
+
+}  // namespace ib

@@ -1,0 +1,87 @@
+#include "render_options.h"
+
+#include "error.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdlib>
+
+namespace ib {
+
+namespace {
+
+int parseCount(const std::string& text, const std::string& option, int min, int max) {
+  if (text.empty() || text.size() > 9 || !std::all_of(text.begin(), text.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); }))
+    throw InputError(option + ": '" + text + "' is not a whole number");
+  const int value = std::atoi(text.c_str());
+  if (value < min || value > max)
+    throw InputError(option + ": " + text + " is outside " + std::to_string(min) + ".." + std::to_string(max));
+  return value;
+}
+
+}  // namespace
+
+std::array<int, 2> parseSize(const std::string& text, const std::string& option) {
+  const size_t x = text.find_first_of("xX");
+  if (x == std::string::npos) throw InputError(option + ": '" + text + "' is not WIDTHxHEIGHT, e.g. 1280x720");
+  return {parseCount(text.substr(0, x), option, 1, 16384), parseCount(text.substr(x + 1), option, 1, 16384)};
+}
+
+std::array<int, 2> parseFrameRange(const std::string& text, const std::string& option) {
+  const size_t colon = text.find(':');
+  if (colon == std::string::npos) {
+    const int f = parseCount(text, option, 0, 100000000);
+    return {f, f};
+  }
+  const std::array<int, 2> range{parseCount(text.substr(0, colon), option, 0, 100000000),
+                                 parseCount(text.substr(colon + 1), option, 0, 100000000)};
+  if (range[0] > range[1]) throw InputError(option + ": '" + text + "' ends before it starts");
+  return range;
+}
+
+std::array<float, 4> parseBackground(const std::string& text, const std::string& option) {
+  if (text == "transparent") return {0, 0, 0, 0};
+  const std::string hex = !text.empty() && text[0] == '#' ? text.substr(1) : text;
+  if ((hex.size() != 6 && hex.size() != 8) ||
+      !std::all_of(hex.begin(), hex.end(), [](char c) { return std::isxdigit(static_cast<unsigned char>(c)); }))
+    throw InputError(option + ": '" + text + "' is not 'transparent' or a colour RRGGBB or RRGGBBAA");
+  std::array<float, 4> colour{0, 0, 0, 1};
+  for (size_t c = 0; c < hex.size() / 2; ++c) colour[c] = std::strtol(hex.substr(2 * c, 2).c_str(), nullptr, 16) / 255.0f;
+  return colour;
+}
+
+RenderOptions parseRenderOptions(const cli::Arguments& a) {
+  RenderOptions o;
+  if (!a.has("output")) throw InputError("render: needs -o DIR, the folder for the frames");
+  o.output = a.value("output", "");
+  if (a.has("frames")) o.frames = parseFrameRange(a.value("frames", ""), "--frames");
+  if (a.has("size")) o.size = parseSize(a.value("size", ""), "--size");
+  if (a.has("fps")) {
+    const std::string text = a.value("fps", "");
+    char* end = nullptr;
+    const double fps = std::strtod(text.c_str(), &end);
+    if (text.empty() || *end != '\0' || !std::isfinite(fps) || fps <= 0 || fps > 1000)
+      throw InputError("--fps: '" + text + "' is not a frame rate in (0, 1000]");
+    o.fps = fps;
+  }
+  o.target.samples = a.integer("samples", 4, 1, 64);
+  o.target.background = parseBackground(a.value("background", "transparent"), "--background");
+  o.overlays.wireframe = a.flag("wireframe");
+  o.overlays.cohesive = a.flag("cohesive");
+  o.overlays.features = a.flag("features");
+  o.onion = a.integer("onion", 0, 0, render::kMaxOnionSkins / 2);
+  o.sheetEvery = a.integer("sheet-every", 0, 0, 100000);
+  o.mesh.meshFile = a.value("mesh", "");
+  o.mesh.comesh = !a.flag("no-comesh");
+  const std::string device = a.value("device", "any");
+  if (device == "any") o.device = vk::DevicePreference::kAny;
+  else if (device == "gpu") o.device = vk::DevicePreference::kHardware;
+  else if (device == "cpu") o.device = vk::DevicePreference::kSoftware;
+  else throw InputError("--device: '" + device + "' is not any, gpu or cpu");
+  o.validation = a.flag("validation");
+  o.threads = a.integer("threads", 0, 0, 256);
+  return o;
+}
+
+}  // namespace ib

@@ -1,0 +1,41 @@
+// Options of `inbetween render` (and later front ends that draw frames), parsed from the command
+// line. Every bad value is an InputError naming the option.
+#pragma once
+
+#include "cli.h"
+#include "offscreen_renderer.h"
+#include "scene_mesh.h"
+#include "vulkan_context.h"
+
+#include <array>
+#include <optional>
+#include <string>
+
+namespace ib {
+
+struct RenderOptions {
+  std::string output;                  // -o DIR: folder for the frames (created if missing)
+  std::optional<std::array<int, 2>> frames;  // --frames A:B, inclusive; default every frame
+  std::optional<std::array<int, 2>> size;    // --size WxH; default the drawings' canvas
+  std::optional<double> fps;           // --fps N; default the scene's timeline's
+  render::OffscreenOptions target;     // --samples, --background (size filled in later)
+  render::Overlays overlays;           // --wireframe, --cohesive, --features
+  int onion = 0;                       // --onion N: neighbouring frames each side, 0..2
+  int sheetEvery = 0;                  // --sheet-every K: every k-th frame on the sheet; 0 = at most 36 tiles
+  SceneMeshOptions mesh;               // --mesh FILE, --no-comesh
+  vk::DevicePreference device = vk::DevicePreference::kAny;  // --device any|gpu|cpu
+  bool validation = false;             // --validation: Khronos layer on, any message is an error
+  int threads = 0;                     // --threads N: solver threads, 0 = all cores
+};
+
+// `arguments` holds the options after SCENE; the command name is used in messages.
+RenderOptions parseRenderOptions(const cli::Arguments& arguments);
+
+// "WxH" with both in [1, 16384]; `option` names it in errors.
+std::array<int, 2> parseSize(const std::string& text, const std::string& option);
+// "A:B" (inclusive, A <= B) or "A", both >= 0.
+std::array<int, 2> parseFrameRange(const std::string& text, const std::string& option);
+// "transparent" or a colour "RRGGBB" / "#RRGGBB" / "RRGGBBAA": straight RGBA in [0, 1].
+std::array<float, 4> parseBackground(const std::string& text, const std::string& option);
+
+}  // namespace ib
