@@ -182,7 +182,8 @@ int runBench(const std::vector<std::string>& args) {
   }
   if (args[0] == "comesh") return runBenchComesh(std::vector<std::string>(args.begin() + 1, args.end()));
   if (args[0] == "anim") return runBenchAnim(std::vector<std::string>(args.begin() + 1, args.end()));
-  if (args[0] != "interp") throw InputError("bench: unknown case '" + args[0] + "' (available: interp, comesh, anim)");
+  if (args[0] == "render") return runBenchRender(std::vector<std::string>(args.begin() + 1, args.end()));
+  if (args[0] != "interp") throw InputError("bench: unknown case '" + args[0] + "' (available: interp, comesh, anim, render)");
   const cli::Arguments a("bench", std::vector<std::string>(args.begin() + 1, args.end()),
                          {"sizes", "keys", "frames", "repeats", "threads"}, {"no-baseline", "help"});
   if (a.flag("help")) {

@@ -15,4 +15,7 @@ int runBenchComesh(const std::vector<std::string>& args);
 // `inbetween bench anim ...` (bench_anim.cpp): args after "anim".
 int runBenchAnim(const std::vector<std::string>& args);
 
+// `inbetween bench render ...` (bench_render.cpp): args after "render".
+int runBenchRender(const std::vector<std::string>& args);
+
 }  // namespace ib

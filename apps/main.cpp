@@ -23,6 +23,7 @@ constexpr const char* kUsage =
     "  bench interp   benchmark the interpolation solver; one JSON object per case\n"
     "  bench comesh   benchmark Comesh Optimization; one JSON object per case\n"
     "  bench anim     benchmark playing every bundled scene's timeline; one JSON object per case\n"
+    "  bench render   benchmark headless rendering (frames per second); one JSON object per case\n"
     "\n"
     "options:\n"
     "  -h, --help     show this help (also: inbetween COMMAND --help)\n";

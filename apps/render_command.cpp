@@ -4,7 +4,6 @@
 #include "error.h"
 #include "frame_stream.h"
 #include "render_options.h"
-#include "vulkan_check.h"
 
 #include <chrono>
 #include <cmath>
@@ -47,19 +46,6 @@ Timeline withFps(const Timeline& timeline, double fps) {
   return Timeline(fps, timeline.loops(), timeline.marks(), timeline.segments());
 }
 
-vk::VulkanContext openContext(const RenderOptions& options) {
-  vk::ContextOptions context;
-  context.validation = options.validation;
-  context.device = options.device;
-  try {
-    return vk::VulkanContext(context);
-  } catch (const vk::VulkanError& e) {
-    // No usable driver is a fault of the machine, not of inbetween: say what to install.
-    throw InputError(std::string("render: no usable Vulkan device: ") + e.what() +
-                     " (lavapipe comes with Debian's mesa-vulkan-drivers; see scripts/setup.sh)");
-  }
-}
-
 std::string framePath(const fs::path& dir, int frame) {
   char name[32];
   std::snprintf(name, sizeof name, "frame_%04d.png", frame);
@@ -92,7 +78,10 @@ int runRender(const std::vector<std::string>& rawArgs) {
   if (range[1] >= frameCount)
     throw InputError("--frames: the timeline has frames 0.." + std::to_string(frameCount - 1) + ", asked for up to " +
                      std::to_string(range[1]));
-  const vk::VulkanContext context = openContext(options);  // before the long work: a missing driver fails fast
+  vk::ContextOptions contextOptions;
+  contextOptions.validation = options.validation;
+  contextOptions.device = options.device;
+  const vk::VulkanContext context = openVulkan(contextOptions, "render");  // before the long work: fail fast
   const fs::path dir(options.output);
   std::error_code error;
   fs::create_directories(dir, error);

@@ -1,6 +1,7 @@
 #include "render_options.h"
 
 #include "error.h"
+#include "vulkan_check.h"
 
 #include <algorithm>
 #include <cctype>
@@ -21,6 +22,15 @@ int parseCount(const std::string& text, const std::string& option, int min, int 
 }
 
 }  // namespace
+
+vk::VulkanContext openVulkan(const vk::ContextOptions& options, const std::string& command) {
+  try {
+    return vk::VulkanContext(options);
+  } catch (const vk::VulkanError& e) {
+    throw InputError(command + ": no usable Vulkan device: " + e.what() +
+                     " (lavapipe comes with Debian's mesa-vulkan-drivers; see scripts/setup.sh)");
+  }
+}
 
 std::array<int, 2> parseSize(const std::string& text, const std::string& option) {
   const size_t x = text.find_first_of("xX");

@@ -31,6 +31,10 @@ struct RenderOptions {
 // `arguments` holds the options after SCENE; the command name is used in messages.
 RenderOptions parseRenderOptions(const cli::Arguments& arguments);
 
+// The Vulkan context for `command`. A missing or broken driver is an InputError (exit 2) that says
+// what failed and what to install: the machine is at fault, not inbetween.
+vk::VulkanContext openVulkan(const vk::ContextOptions& options, const std::string& command);
+
 // "WxH" with both in [1, 16384]; `option` names it in errors.
 std::array<int, 2> parseSize(const std::string& text, const std::string& option);
 // "A:B" (inclusive, A <= B) or "A", both >= 0.

@@ -146,7 +146,7 @@ void MeshRenderer::drawArtwork(VkCommandBuffer cmd, const float view[4], const E
   std::copy(active.layers, active.layers + kMaxActiveKeys, push.layers);
   push.activeCount = active.count;
   push.keyCount = keyCount_;
-  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.artwork.get());
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.artwork[vk::artworkVariant(active.count)].get());
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.artworkLayout.get(), 0, 1, &descriptorSet_, 0, nullptr);
   vkCmdPushConstants(cmd, pipelines_.artworkLayout.get(), VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
                      sizeof push, &push);

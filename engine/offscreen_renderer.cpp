@@ -26,6 +26,7 @@ struct OffscreenRenderer::Slot {
 void unpremultiply(RgbaImage& image) {
   for (size_t p = 0; p + 3 < image.pixels.size(); p += 4) {
     const unsigned a = image.pixels[p + 3];
+    if (a == 255) continue;  // opaque: premultiplied and straight agree
     for (int c = 0; c < 3; ++c)
       image.pixels[p + c] = a == 0 ? 0 : static_cast<uint8_t>(std::min(255u, (image.pixels[p + c] * 255u + a / 2) / a));
   }

@@ -3,8 +3,12 @@
 #include "gpu_resources.h"
 #include "vulkan_check.h"
 
-#include <artwork_frag.h>
-#include <artwork_vert.h>
+#include <artwork2_frag.h>
+#include <artwork2_vert.h>
+#include <artwork4_frag.h>
+#include <artwork4_vert.h>
+#include <artwork8_frag.h>
+#include <artwork8_vert.h>
 #include <overlay_frag.h>
 #include <overlay_vert.h>
 
@@ -134,15 +138,22 @@ PipelineObject createPipeline(VkDevice device, VkRenderPass pass, VkSampleCountF
 
 }  // namespace
 
+int artworkVariant(int activeKeys) { return activeKeys <= 2 ? 0 : activeKeys <= 4 ? 1 : 2; }
+
 RendererPipelines createRendererPipelines(VkDevice device, VkRenderPass pass, VkSampleCountFlagBits samples) {
   RendererPipelines out;
   out.setLayout = createSetLayout(device);
   const VkDescriptorSetLayout set = out.setLayout.get();
   out.artworkLayout = createLayout(device, &set, sizeof(ArtworkPush), VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT);
   out.overlayLayout = createLayout(device, nullptr, 4 * sizeof(float), VK_SHADER_STAGE_VERTEX_BIT);
-  PipelineSpec artwork{artwork_vert, sizeof(artwork_vert), artwork_frag, sizeof(artwork_frag), "artwork",
-                       VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST, {{0, 0, VK_FORMAT_R32G32_SFLOAT, 0}}, 2 * sizeof(float)};
-  out.artwork = createPipeline(device, pass, samples, out.artworkLayout.get(), artwork);
+  const PipelineSpec artwork[3] = {
+      {artwork2_vert, sizeof(artwork2_vert), artwork2_frag, sizeof(artwork2_frag), "artwork (2 keys)",
+       VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST, {{0, 0, VK_FORMAT_R32G32_SFLOAT, 0}}, 2 * sizeof(float)},
+      {artwork4_vert, sizeof(artwork4_vert), artwork4_frag, sizeof(artwork4_frag), "artwork (4 keys)",
+       VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST, {{0, 0, VK_FORMAT_R32G32_SFLOAT, 0}}, 2 * sizeof(float)},
+      {artwork8_vert, sizeof(artwork8_vert), artwork8_frag, sizeof(artwork8_frag), "artwork (8 keys)",
+       VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST, {{0, 0, VK_FORMAT_R32G32_SFLOAT, 0}}, 2 * sizeof(float)}};
+  for (int v = 0; v < 3; ++v) out.artwork[v] = createPipeline(device, pass, samples, out.artworkLayout.get(), artwork[v]);
   PipelineSpec overlay{overlay_vert, sizeof(overlay_vert), overlay_frag, sizeof(overlay_frag), "overlay lines",
                        VK_PRIMITIVE_TOPOLOGY_LINE_LIST,
                        {{0, 0, VK_FORMAT_R32G32_SFLOAT, 0}, {1, 0, VK_FORMAT_R32G32B32A32_SFLOAT, 2 * sizeof(float)}},

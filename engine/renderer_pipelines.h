@@ -9,6 +9,8 @@
 
 #include "vulkan_object.h"
 
+#include <array>
+
 namespace ib::vk {
 
 // Matches the push_constant block in shaders/artwork_push.glsl (std430, 104 bytes).
@@ -31,10 +33,13 @@ struct RendererPipelines {
   DescriptorSetLayoutObject setLayout;
   PipelineLayoutObject artworkLayout;
   PipelineLayoutObject overlayLayout;
-  PipelineObject artwork;
+  std::array<PipelineObject, 3> artwork;  // for up to 2, 4 and 8 active keys
   PipelineObject overlayLines;
   PipelineObject overlayTriangles;
 };
+
+// Index into RendererPipelines::artwork of the cheapest variant that draws `activeKeys` keys (1..8).
+int artworkVariant(int activeKeys);
 
 RendererPipelines createRendererPipelines(VkDevice device, VkRenderPass pass, VkSampleCountFlagBits samples);
 

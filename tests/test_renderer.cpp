@@ -92,6 +92,25 @@ TEST_CASE("renderer: two keys' artwork blends by the weights") {
   CHECK(context.validationMessages().empty());
 }
 
+TEST_CASE("renderer: three and five keys in play blend by their weights (every shader variant)") {
+  const vk::VulkanContext context = test::validatedContext();
+  const std::vector<Colour> colours = {{250, 0, 0, 255}, {0, 250, 0, 255}, {0, 0, 250, 255}, {250, 250, 0, 255}, {0, 250, 250, 255}};
+  const Multimesh mesh = squareGrid(3, 2, 2, 12, 5);
+  std::vector<RgbaImage> art;
+  for (const Colour& c : colours) art.push_back(paintedImage(16, 16, [c](int, int) { return c; }));
+  OffscreenRenderer renderer(context, renderMeshOf(mesh, art), squareTarget(16));
+  const Eigen::MatrixX2d x = mesh.keyPositions(0);
+  for (const Eigen::VectorXd& w : {Eigen::VectorXd((Eigen::VectorXd(5) << 0.2, 0.3, 0.5, 0, 0).finished()),
+                                   Eigen::VectorXd((Eigen::VectorXd(5) << 0.1, 0.2, 0.3, 0.25, 0.15).finished())}) {
+    std::array<double, 4> expected{0, 0, 0, 255};
+    for (int k = 0; k < 5; ++k)
+      for (int c = 0; c < 3; ++c) expected[c] += w[k] * colours[k][c];
+    INFO("w = " << w.transpose());
+    requireColour(renderer.render(frameOf(x, w, {0, 0, 16, 16})), 8, 8, expected, 2);
+  }
+  CHECK(context.validationMessages().empty());
+}
+
 TEST_CASE("renderer: semi-transparent line art keeps its colour at its edges (premultiplied alpha)") {
   const vk::VulkanContext context = test::validatedContext();
   const Multimesh mesh = squareGrid(3, 0, 0, 32, 1);
