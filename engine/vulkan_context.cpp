@@ -44,13 +44,18 @@ int rank(VkPhysicalDeviceType type, DevicePreference preference) {
   }
 }
 
-int graphicsFamily(VkPhysicalDevice device) {
+// A queue family with graphics that can also present to `surface` (when there is one), or -1.
+int graphicsFamily(VkPhysicalDevice device, VkSurfaceKHR surface) {
   uint32_t count = 0;
   vkGetPhysicalDeviceQueueFamilyProperties(device, &count, nullptr);
   std::vector<VkQueueFamilyProperties> families(count);
   vkGetPhysicalDeviceQueueFamilyProperties(device, &count, families.data());
-  for (uint32_t f = 0; f < count; ++f)
-    if (families[f].queueFlags & VK_QUEUE_GRAPHICS_BIT) return static_cast<int>(f);
+  for (uint32_t f = 0; f < count; ++f) {
+    if (!(families[f].queueFlags & VK_QUEUE_GRAPHICS_BIT)) continue;
+    VkBool32 presents = VK_TRUE;
+    if (surface) check(vkGetPhysicalDeviceSurfaceSupportKHR(device, f, surface, &presents), "asking whether a queue can present");
+    if (presents) return static_cast<int>(f);
+  }
   return -1;
 }
 
@@ -65,6 +70,7 @@ std::vector<const char*> pointers(const std::vector<std::string>& names) {
 struct VulkanContext::State {
   VkInstance instance = VK_NULL_HANDLE;
   VkDebugUtilsMessengerEXT messenger = VK_NULL_HANDLE;
+  VkSurfaceKHR surface = VK_NULL_HANDLE;
   VkPhysicalDevice physical = VK_NULL_HANDLE;
   VkDevice device = VK_NULL_HANDLE;
   VkQueue queue = VK_NULL_HANDLE;
@@ -75,6 +81,7 @@ struct VulkanContext::State {
 
   ~State() {
     if (device) vkDestroyDevice(device, nullptr);
+    if (surface) vkDestroySurfaceKHR(instance, surface, nullptr);
     if (messenger) {
       auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
           vkGetInstanceProcAddr(instance, "vkDestroyDebugUtilsMessengerEXT"));
@@ -150,7 +157,7 @@ void VulkanContext::State::pickDevice(DevicePreference preference) {
     VkPhysicalDeviceProperties p;
     vkGetPhysicalDeviceProperties(d, &p);
     seen += std::string(seen.empty() ? "" : ", ") + p.deviceName + " (" + typeName(p.deviceType) + ")";
-    const int family = graphicsFamily(d);
+    const int family = graphicsFamily(d, surface);
     const int score = family < 0 ? -1 : rank(p.deviceType, preference);
     if (score > best) {
       best = score;
@@ -163,7 +170,8 @@ void VulkanContext::State::pickDevice(DevicePreference preference) {
     const char* wanted = preference == DevicePreference::kSoftware   ? "a software rasterizer (lavapipe)"
                          : preference == DevicePreference::kHardware ? "a hardware GPU"
                                                                      : "any device";
-    throw VulkanError(std::string("no Vulkan device with graphics matches the request for ") + wanted +
+    throw VulkanError(std::string("no Vulkan device with graphics") + (surface ? " that presents to the window" : "") +
+                          " matches the request for " + wanted +
                           "; devices found: " + (seen.empty() ? "none (is mesa-vulkan-drivers installed?)" : seen),
                       VK_ERROR_INITIALIZATION_FAILED);
   }
@@ -190,6 +198,10 @@ void VulkanContext::State::createDevice(const ContextOptions& options) {
 
 VulkanContext::VulkanContext(const ContextOptions& options) : state_(std::make_unique<State>()) {
   state_->createInstance(options);
+  if (options.createSurface) {
+    state_->surface = options.createSurface(state_->instance);
+    if (!state_->surface) throw VulkanError("creating the window surface failed", VK_ERROR_INITIALIZATION_FAILED);
+  }
   state_->pickDevice(options.device);
   state_->createDevice(options);
 }
@@ -203,6 +215,7 @@ VkPhysicalDevice VulkanContext::physicalDevice() const { return state_->physical
 VkDevice VulkanContext::device() const { return state_->device; }
 VkQueue VulkanContext::queue() const { return state_->queue; }
 uint32_t VulkanContext::queueFamily() const { return state_->family; }
+VkSurfaceKHR VulkanContext::surface() const { return state_->surface; }
 std::string VulkanContext::deviceName() const { return state_->properties.deviceName; }
 bool VulkanContext::software() const { return state_->properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU; }
 

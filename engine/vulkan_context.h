@@ -4,6 +4,7 @@
 // require silence.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -22,6 +23,9 @@ struct ContextOptions {
   DevicePreference device = DevicePreference::kAny;
   std::vector<std::string> instanceExtensions;   // e.g. GLFW's surface extensions; empty = headless
   std::vector<std::string> deviceExtensions;     // e.g. VK_KHR_swapchain for a window; default none
+  // For a window: makes the surface once the instance exists (e.g. with glfwCreateWindowSurface).
+  // The context then owns it and picks a device whose graphics queue can present to it. Default none.
+  std::function<VkSurfaceKHR(VkInstance)> createSurface;
 };
 
 // Owns the instance, the debug messenger and the device; destroys them in reverse order. Move-only
@@ -42,6 +46,7 @@ class VulkanContext {
   VkDevice device() const;
   VkQueue queue() const;          // graphics (and transfer) queue
   uint32_t queueFamily() const;
+  VkSurfaceKHR surface() const;   // VK_NULL_HANDLE when headless
   std::string deviceName() const;
   bool software() const;          // a CPU rasterizer (VK_PHYSICAL_DEVICE_TYPE_CPU)
   // Validation warnings and errors so far (empty without validation).

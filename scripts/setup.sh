@@ -11,6 +11,7 @@ packages=(
   libcgal-dev libpotrace-dev libpng-dev
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers glslang-tools
   libglfw3-dev libglm-dev libimgui-dev libtinygltf-dev libstb-dev
+  xvfb xauth
 )
 
 missing=()
