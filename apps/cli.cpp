@@ -3,6 +3,7 @@
 #include "error.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 #include <sstream>
 
@@ -55,6 +56,21 @@ int Arguments::integer(const std::string& name, int fallback, int min, int max) 
     throw InputError(command_ + ": --" + name + " must be a whole number in [" + std::to_string(min) + ", " +
                      std::to_string(max) + "], got '" + it->second + "'");
   return static_cast<int>(v);
+}
+
+std::vector<std::string> expandShortOutput(const std::vector<std::string>& args) {
+  std::vector<std::string> out;
+  for (const std::string& a : args) out.push_back(a == "-o" ? "--output" : a);
+  return out;
+}
+
+bool printHelpIfAsked(const std::vector<std::string>& args, const char* usage) {
+  for (const std::string& a : args)
+    if (a == "--help" || a == "-h") {
+      std::fputs(usage, stdout);
+      return true;
+    }
+  return false;
 }
 
 std::vector<int> integerList(const std::string& text, const std::string& option, int min, int max) {

@@ -28,6 +28,12 @@ class Arguments {
   std::vector<std::string> positional_;
 };
 
+// A subcommand's words with -o spelled --output.
+std::vector<std::string> expandShortOutput(const std::vector<std::string>& args);
+
+// When args hold -h or --help: prints `usage` to stdout and returns true.
+bool printHelpIfAsked(const std::vector<std::string>& args, const char* usage);
+
 // A comma-separated list of integers, each optionally with a k suffix (x 1000) and in [min, max],
 // for option --`option` (named in the error).
 std::vector<int> integerList(const std::string& text, const std::string& option, int min, int max);

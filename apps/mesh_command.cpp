@@ -56,13 +56,8 @@ void writePictures(const Scene& scene, const BuiltScene& built, const Multimesh&
 }  // namespace
 
 int runMesh(const std::vector<std::string>& rawArgs) {
-  std::vector<std::string> args;
-  for (const std::string& a : rawArgs) args.push_back(a == "-o" ? "--output" : a);
-  for (const std::string& a : args)
-    if (a == "--help" || a == "-h") {
-      std::fputs(kUsage, stdout);
-      return 0;
-    }
+  const std::vector<std::string> args = cli::expandShortOutput(rawArgs);
+  if (cli::printHelpIfAsked(args, kUsage)) return 0;
   const cli::Arguments options("mesh", args, {"output"}, {"json", "no-pictures", "no-comesh"});
   if (options.positional().size() != 1) throw InputError("mesh: needs exactly one SCENE file (see `inbetween mesh --help`)");
   const std::string scenePath = options.positional()[0];

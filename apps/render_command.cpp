@@ -55,13 +55,8 @@ std::string framePath(const fs::path& dir, int frame) {
 }  // namespace
 
 int runRender(const std::vector<std::string>& rawArgs) {
-  std::vector<std::string> args;
-  for (const std::string& a : rawArgs) args.push_back(a == "-o" ? "--output" : a);
-  for (const std::string& a : args)
-    if (a == "--help" || a == "-h") {
-      std::fputs(kUsage, stdout);
-      return 0;
-    }
+  const std::vector<std::string> args = cli::expandShortOutput(rawArgs);
+  if (cli::printHelpIfAsked(args, kUsage)) return 0;
   const cli::Arguments arguments("render", args,
                                  {"output", "frames", "size", "fps", "background", "samples", "onion", "sheet-every", "mesh",
                                   "device", "threads"},

@@ -35,6 +35,14 @@ Multimesh squareGrid(int n, double x0, double y0, double side, int keys) {
   return mesh;
 }
 
+render::FrameDraw frameOf(const Eigen::MatrixX2d& x, const Eigen::VectorXd& w, render::ViewBox view) {
+  render::FrameDraw frame;
+  frame.positions = &x;
+  frame.weights = w;
+  frame.view = view;
+  return frame;
+}
+
 std::array<double, 4> pixel(const RgbaImage& image, int x, int y) {
   const uint8_t* p = image.at(x, y);
   return {double(p[0]), double(p[1]), double(p[2]), double(p[3])};

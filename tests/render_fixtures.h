@@ -22,6 +22,9 @@ RgbaImage paintedImage(int width, int height, const std::function<std::array<uin
 // one of `keys` keys.
 Multimesh squareGrid(int n, double x0, double y0, double side, int keys);
 
+// A frame of positions x (kept by pointer) at weights w showing `view`, without overlays.
+render::FrameDraw frameOf(const Eigen::MatrixX2d& x, const Eigen::VectorXd& w, render::ViewBox view);
+
 // Straight-alpha RGBA of pixel (x, y) as doubles in [0, 255].
 std::array<double, 4> pixel(const RgbaImage& image, int x, int y);
 

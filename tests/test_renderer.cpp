@@ -10,6 +10,7 @@ using namespace ib::render;
 using ib::test::coveredArea;
 using ib::test::paintedImage;
 using ib::test::pixel;
+using ib::test::frameOf;
 using ib::test::squareGrid;
 
 namespace {
@@ -30,14 +31,6 @@ void requireColour(const RgbaImage& image, int x, int y, const std::array<double
 }
 
 Eigen::VectorXd weights2(double a, double b) { return (Eigen::VectorXd(2) << a, b).finished(); }
-
-FrameDraw frameOf(const Eigen::MatrixX2d& x, const Eigen::VectorXd& w, ViewBox view) {
-  FrameDraw frame;
-  frame.positions = &x;
-  frame.weights = w;
-  frame.view = view;
-  return frame;
-}
 
 OffscreenOptions squareTarget(int size) {
   OffscreenOptions options;

@@ -9,19 +9,12 @@ using namespace ib;
 using namespace ib::render;
 using ib::test::paintedImage;
 using ib::test::pixel;
+using ib::test::frameOf;
 using ib::test::squareGrid;
 
 namespace {
 
 using Colour = std::array<uint8_t, 4>;
-
-FrameDraw frameOf(const Eigen::MatrixX2d& x, const Eigen::VectorXd& w, ViewBox view) {
-  FrameDraw frame;
-  frame.positions = &x;
-  frame.weights = w;
-  frame.view = view;
-  return frame;
-}
 
 // Smooth, orientation-preserving warp about (128, 128): scale, rotate 20 degrees, bend.
 Eigen::MatrixX2d warp(const Eigen::MatrixX2d& X) {
