@@ -24,12 +24,50 @@ SamplerObject createSampler(VkDevice device) {
   info.sType = VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO;
   info.magFilter = VK_FILTER_LINEAR;
   info.minFilter = VK_FILTER_LINEAR;
-  info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
+  info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_LINEAR;  // trilinear: shrunk line art neither shimmers nor pops between levels
   info.addressModeU = info.addressModeV = info.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-  info.maxLod = 0;
+  info.maxLod = VK_LOD_CLAMP_NONE;
   VkSampler sampler = VK_NULL_HANDLE;
   check(vkCreateSampler(device, &info, nullptr, &sampler), "creating the artwork sampler");
   return SamplerObject(device, sampler);
+}
+
+// A full mip chain when the device can blit RGBA8 with linear filtering, else one level.
+uint32_t mipLevelCount(const VulkanContext& context, VkExtent2D size) {
+  VkFormatProperties properties;
+  vkGetPhysicalDeviceFormatProperties(context.physicalDevice(), VK_FORMAT_R8G8B8A8_UNORM, &properties);
+  const VkFormatFeatureFlags needed =
+      VK_FORMAT_FEATURE_BLIT_SRC_BIT | VK_FORMAT_FEATURE_BLIT_DST_BIT | VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT;
+  if ((properties.optimalTilingFeatures & needed) != needed) return 1;
+  uint32_t levels = 1;
+  for (uint32_t side = std::max(size.width, size.height); side > 1; side /= 2) ++levels;
+  return levels;
+}
+
+// Level 0 (in TRANSFER_DST) halved into each next level by linear blits, then every level made
+// shader-readable. Premultiplied texels average correctly.
+void recordMipChain(VkCommandBuffer cmd, VkImage image, VkExtent2D size, uint32_t layers, uint32_t levels) {
+  int32_t w = static_cast<int32_t>(size.width), h = static_cast<int32_t>(size.height);
+  for (uint32_t level = 1; level < levels; ++level) {
+    transitionImage(cmd, image, layers, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                    VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                    VK_ACCESS_TRANSFER_READ_BIT, level - 1, 1);
+    VkImageBlit blit{};
+    blit.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, level - 1, 0, layers};
+    blit.srcOffsets[1] = {w, h, 1};
+    w = std::max(1, w / 2);
+    h = std::max(1, h / 2);
+    blit.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, level, 0, layers};
+    blit.dstOffsets[1] = {w, h, 1};
+    vkCmdBlitImage(cmd, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &blit,
+                   VK_FILTER_LINEAR);
+    transitionImage(cmd, image, layers, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                    VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
+                    VK_ACCESS_SHADER_READ_BIT, level - 1, 1);
+  }
+  transitionImage(cmd, image, layers, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                  VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
+                  VK_ACCESS_SHADER_READ_BIT, levels - 1, 1);
 }
 
 }  // namespace
@@ -62,28 +100,19 @@ ArtworkTexture uploadArtwork(const VulkanContext& context, VkCommandPool pool, c
   ImageSpec spec;
   spec.extent = out.layerSize;
   spec.layers = static_cast<uint32_t>(drawings.size());
-  spec.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+  spec.arrayView = true;  // the shader samples a sampler2DArray, also for one key
+  spec.mipLevels = mipLevelCount(context, out.layerSize);
+  spec.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
   out.image = createImage(context, spec, "the artwork texture");
-  // Always an array view, even for one key: the shader samples a sampler2DArray.
-  VkImageViewCreateInfo view{};
-  view.sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO;
-  view.image = out.image.image.get();
-  view.viewType = VK_IMAGE_VIEW_TYPE_2D_ARRAY;
-  view.format = spec.format;
-  view.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, spec.layers};
-  VkImageView viewHandle = VK_NULL_HANDLE;
-  check(vkCreateImageView(context.device(), &view, nullptr, &viewHandle), "creating the artwork texture's array view");
-  out.image.view = ImageViewObject(context.device(), viewHandle);
   submitAndWait(context, pool, [&](VkCommandBuffer cmd) {
     transitionImage(cmd, out.image.image.get(), spec.layers, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                    VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
+                    VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT, 0,
+                    spec.mipLevels);
     VkBufferImageCopy region{};
     region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, spec.layers};
     region.imageExtent = {out.layerSize.width, out.layerSize.height, 1};
     vkCmdCopyBufferToImage(cmd, staging.buffer.get(), out.image.image.get(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
-    transitionImage(cmd, out.image.image.get(), spec.layers, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                    VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
-                    VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT);
+    recordMipChain(cmd, out.image.image.get(), out.layerSize, spec.layers, spec.mipLevels);
   });
   out.sampler = createSampler(context.device());
   return out;

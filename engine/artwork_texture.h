@@ -1,7 +1,8 @@
 // Every key's drawing in one 2D-array texture, one layer per key, premultiplied alpha, RGBA8
 // UNORM (blending happens in the drawings' own colour values, as in 2D paint programs). Layers
 // share the largest drawing's size; a smaller drawing sits in its layer's top-left corner with
-// transparent padding, so its UVs scale by drawing size / layer size.
+// transparent padding, so its UVs scale by drawing size / layer size. A full mip chain (linear
+// blits of the premultiplied texels) and trilinear filtering keep line art smooth when drawn smaller.
 #pragma once
 
 #include "gpu_resources.h"
@@ -12,8 +13,8 @@
 namespace ib::vk {
 
 struct ArtworkTexture {
-  GpuImage image;           // layers = keys, in VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL
-  SamplerObject sampler;    // bilinear, clamped to the edge
+  GpuImage image;           // layers = keys, every mip level in VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL
+  SamplerObject sampler;    // trilinear, clamped to the edge
   VkExtent2D layerSize{};   // pixels
 };
 

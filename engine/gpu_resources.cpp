@@ -74,7 +74,7 @@ GpuImage createImage(const VulkanContext& context, const ImageSpec& spec, const 
   info.imageType = VK_IMAGE_TYPE_2D;
   info.format = spec.format;
   info.extent = {spec.extent.width, spec.extent.height, 1};
-  info.mipLevels = 1;
+  info.mipLevels = spec.mipLevels;
   info.arrayLayers = spec.layers;
   info.samples = spec.samples;
   info.tiling = VK_IMAGE_TILING_OPTIMAL;
@@ -95,9 +95,9 @@ GpuImage createImage(const VulkanContext& context, const ImageSpec& spec, const 
   VkImageViewCreateInfo view{};
   view.sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO;
   view.image = handle;
-  view.viewType = spec.layers > 1 ? VK_IMAGE_VIEW_TYPE_2D_ARRAY : VK_IMAGE_VIEW_TYPE_2D;
+  view.viewType = spec.layers > 1 || spec.arrayView ? VK_IMAGE_VIEW_TYPE_2D_ARRAY : VK_IMAGE_VIEW_TYPE_2D;
   view.format = spec.format;
-  view.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, spec.layers};
+  view.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, spec.mipLevels, 0, spec.layers};
   VkImageView viewHandle = VK_NULL_HANDLE;
   check(vkCreateImageView(context.device(), &view, nullptr, &viewHandle), (std::string("creating a view of ") + what).c_str());
   out.view = ImageViewObject(context.device(), viewHandle);
@@ -136,7 +136,7 @@ void submitAndWait(const VulkanContext& context, VkCommandPool pool, const std::
 
 void transitionImage(VkCommandBuffer cmd, VkImage image, uint32_t layers, VkImageLayout from, VkImageLayout to,
                      VkPipelineStageFlags srcStage, VkAccessFlags srcAccess, VkPipelineStageFlags dstStage,
-                     VkAccessFlags dstAccess) {
+                     VkAccessFlags dstAccess, uint32_t baseMip, uint32_t mipCount) {
   VkImageMemoryBarrier barrier{};
   barrier.sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER;
   barrier.srcAccessMask = srcAccess;
@@ -146,7 +146,7 @@ void transitionImage(VkCommandBuffer cmd, VkImage image, uint32_t layers, VkImag
   barrier.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
   barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
   barrier.image = image;
-  barrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, layers};
+  barrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, baseMip, mipCount, 0, layers};
   vkCmdPipelineBarrier(cmd, srcStage, dstStage, 0, 0, nullptr, 0, nullptr, 1, &barrier);
 }
 

@@ -41,7 +41,10 @@ struct GpuImage {
 
 struct ImageSpec {
   VkExtent2D extent{};                                  // pixels
-  uint32_t layers = 1;                                  // array layers; > 1 gives a 2D-array view
+  uint32_t layers = 1;                                  // array layers
+  bool arrayView = false;                               // view as a 2D array (also for one layer); else
+                                                        // 2D for one layer, 2D array for more
+  uint32_t mipLevels = 1;                               // mip levels, all in the view
   VkFormat format = VK_FORMAT_R8G8B8A8_UNORM;
   VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
   VkImageUsageFlags usage = 0;
@@ -51,10 +54,11 @@ GpuImage createImage(const VulkanContext& context, const ImageSpec& spec, const 
 // Records commands with `record`, submits them to the context's queue and waits for them to finish.
 void submitAndWait(const VulkanContext& context, VkCommandPool pool, const std::function<void(VkCommandBuffer)>& record);
 
-// A layout transition of every layer's colour aspect, with the given stages and accesses.
+// A layout transition of every layer's colour aspect in mip levels [baseMip, baseMip + mipCount),
+// with the given stages and accesses.
 void transitionImage(VkCommandBuffer cmd, VkImage image, uint32_t layers, VkImageLayout from, VkImageLayout to,
                      VkPipelineStageFlags srcStage, VkAccessFlags srcAccess, VkPipelineStageFlags dstStage,
-                     VkAccessFlags dstAccess);
+                     VkAccessFlags dstAccess, uint32_t baseMip = 0, uint32_t mipCount = 1);
 
 // A shader module from SPIR-V words (compiled from shaders/ at build time). `name` is for errors.
 ShaderModuleObject createShaderModule(VkDevice device, const uint32_t* words, size_t bytes, const char* name);

@@ -124,3 +124,27 @@ TEST_CASE("renderer: semi-transparent line art keeps its colour at its edges (pr
   }
   CHECK(context.validationMessages().empty());
 }
+
+TEST_CASE("renderer: artwork drawn at a quarter of its size is filtered, not aliased (mipmaps)") {
+  const vk::VulkanContext context = test::validatedContext();
+  const Multimesh mesh = squareGrid(3, 0, 0, 256, 1);
+  // One-pixel black and white checkerboard: point sampling it at 1/4 scale gives black or white.
+  const RenderMesh scene = renderMeshOf(mesh, {paintedImage(256, 256, [](int x, int y) {
+                                          const uint8_t v = (x + y) % 2 ? 255 : 0;
+                                          return Colour{v, v, v, 255};
+                                        })});
+  OffscreenRenderer renderer(context, scene, squareTarget(64));
+  const Eigen::MatrixX2d x = mesh.keyPositions(0);
+  // 4.3 texels per pixel: pixel centres fall at every fraction of a texel.
+  const RgbaImage image = renderer.render(frameOf(x, Eigen::VectorXd::Ones(1), {0, 0, 275.2, 275.2}));
+  double lowest = 255, highest = 0;
+  for (int py = 4; py < 56; ++py)
+    for (int px = 4; px < 56; ++px) {
+      lowest = std::min(lowest, pixel(image, px, py)[0]);
+      highest = std::max(highest, pixel(image, px, py)[0]);
+    }
+  INFO("grey between " << lowest << " and " << highest);
+  CHECK(lowest > 127.5 - 8);
+  CHECK(highest < 127.5 + 8);
+  CHECK(context.validationMessages().empty());
+}
