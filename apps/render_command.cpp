@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <deque>
 #include <filesystem>
+#include <functional>
 
 namespace ib {
 
@@ -50,6 +51,27 @@ std::string framePath(const fs::path& dir, int frame) {
   char name[32];
   std::snprintf(name, sizeof name, "frame_%04d.png", frame);
   return (dir / name).string();
+}
+
+// Solves the stream's frames in order (dynamics and warm starts need every earlier frame) and
+// calls draw(window, at) for each frame in `range` (inclusive) once the `neighbours` frames after
+// it are solved too; window[at] is the frame, with up to `neighbours` solved frames on each side.
+void playWithNeighbours(FrameStream& stream, std::array<int, 2> range, int neighbours,
+                        const std::function<void(const std::deque<AnimationFrame>&, size_t)>& draw) {
+  std::deque<AnimationFrame> window;
+  size_t next = 0;  // index into window of the next frame to draw
+  auto drawIfInRange = [&](size_t at) {
+    if (window[at].index >= range[0] && window[at].index <= range[1]) draw(window, at);
+  };
+  while (!stream.done()) {
+    AnimationFrame frame = stream.next();
+    if (frame.index > range[1] + neighbours) break;
+    if (frame.index < range[0] - neighbours) continue;
+    window.push_back(std::move(frame));
+    for (; next < window.size() && window[next].index + neighbours <= window.back().index; ++next) drawIfInRange(next);
+    for (; next > static_cast<size_t>(neighbours); --next) window.pop_front();  // no longer anyone's neighbour
+  }
+  for (; next < window.size(); ++next) drawIfInRange(next);
 }
 
 }  // namespace
@@ -106,7 +128,6 @@ int runRender(const std::vector<std::string>& rawArgs) {
   const int tileW = std::min(240, size[0]);
   const int tileH = std::max(1, static_cast<int>(std::lround(double(tileW) * size[1] / size[0])));
   std::vector<RgbaImage> tiles;
-  std::deque<AnimationFrame> window;  // solved frames around the next one to draw (onion skins)
   std::deque<int> inFlight;           // frame indices submitted, oldest first
   int written = 0;
   const auto started = std::chrono::steady_clock::now();
@@ -120,7 +141,7 @@ int runRender(const std::vector<std::string>& rawArgs) {
     progress.update("rendering frame " + std::to_string(f) + " (" + std::to_string(written) + " of " + std::to_string(rendered) + ")",
                     0.3 + 0.7 * written / rendered);
   };
-  auto draw = [&](size_t at) {  // renders window[at], with the frames around it as onion skins
+  auto draw = [&](const std::deque<AnimationFrame>& window, size_t at) {  // window[at], neighbours as onion skins
     const AnimationFrame& frame = window[at];
     render::FrameDraw request;
     request.positions = &frame.x;
@@ -136,25 +157,7 @@ int runRender(const std::vector<std::string>& rawArgs) {
     inFlight.push_back(frame.index);
     while (static_cast<int>(inFlight.size()) > 2) collect();
   };
-  // Frames are solved in order (dynamics and warm starts need every earlier frame); each is drawn
-  // once the `onion` frames after it are solved too.
-  size_t nextToDraw = 0;  // index into window
-  while (!stream.done()) {
-    AnimationFrame frame = stream.next();
-    if (frame.index > range[1] + options.onion) break;
-    if (frame.index < range[0] - options.onion) continue;
-    window.push_back(std::move(frame));
-    while (nextToDraw < window.size() && window[nextToDraw].index + options.onion <= window.back().index) {
-      if (window[nextToDraw].index >= range[0] && window[nextToDraw].index <= range[1]) draw(nextToDraw);
-      ++nextToDraw;
-    }
-    while (nextToDraw > static_cast<size_t>(options.onion)) {  // no longer anyone's onion skin
-      window.pop_front();
-      --nextToDraw;
-    }
-  }
-  for (; nextToDraw < window.size(); ++nextToDraw)
-    if (window[nextToDraw].index >= range[0] && window[nextToDraw].index <= range[1]) draw(nextToDraw);
+  playWithNeighbours(stream, range, options.onion, draw);
   while (!inFlight.empty()) collect();
   const std::string sheetPath = (dir / "contact_sheet.png").string();
   writePng(sheetPath, render::contactSheet(tiles, {}));
