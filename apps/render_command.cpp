@@ -116,7 +116,7 @@ int runRender(const std::vector<std::string>& rawArgs) {
   const std::array<int, 2> size = options.size.value_or(std::array<int, 2>{canvasW, canvasH});
   options.target.width = size[0];
   options.target.height = size[1];
-  const render::RenderMesh renderMesh = render::renderMeshOf(mesh, drawings, featureVertices(scene, mesh));
+  const render::RenderMesh renderMesh = render::renderMeshOf(mesh, std::move(drawings), featureVertices(scene, mesh));
   render::OffscreenRenderer renderer(context, renderMesh, options.target);
   const render::ViewBox view = render::fitView({0, 0, double(canvasW), double(canvasH)}, size[0], size[1], 0);
 
