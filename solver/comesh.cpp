@@ -1,5 +1,6 @@
 #include "comesh.h"
 
+#include "comesh_block_energy.h"
 #include "comesh_energy.h"
 #include "comesh_preconditioner.h"
 
@@ -25,8 +26,12 @@ class VertexStepper {
   // Returns the relative energy decrease (0 when no step lowered the energy). `stepSize` carries
   // over between calls: it grows after a success and shrinks while a step fails.
   double step(double& stepSize) {
+    if (mesh_.topologyVersion != preparedVersion_) {  // the other keys only change with the topology
+      energy_.prepare(mesh_.triangles, mesh_.keys, key_, odtWeight_);
+      preparedVersion_ = mesh_.topologyVersion;
+    }
     Eigen::MatrixX2d gradient;
-    const double before = comeshBlockEnergy(mesh_.triangles, mesh_.keys, key_, &gradient, odtWeight_);
+    const double before = energy_.evaluate(mesh_.keys[key_], &gradient);
     const int n = mesh_.vertexCount();
     preconditioner_.update(mesh_);
     preconditioner_.apply(mesh_, gradient, direction_);
@@ -47,7 +52,7 @@ class VertexStepper {
     if (!(stepSize > 0)) stepSize = 0.1 * meanEdge(start) / largest;
     for (int attempt = 0; attempt < 20; ++attempt) {
       moveVertices(start, startU, stepSize);
-      const double after = comeshBlockEnergy(mesh_.triangles, mesh_.keys, key_, nullptr, odtWeight_);
+      const double after = energy_.evaluate(mesh_.keys[key_], nullptr);
       if (after < before) {
         stepSize *= 1.5;
         return (before - after) / before;
@@ -150,6 +155,8 @@ class VertexStepper {
   SobolevPreconditioner& preconditioner_;
   int key_;
   double odtWeight_;
+  BlockEnergy energy_;          // eq. 8's part that depends on key_, prepared for preparedVersion_
+  long preparedVersion_ = -1;   // the mesh's topologyVersion when energy_ was prepared
   double minimumGap_, maximumGap_;  // px
   double chordTolerance_;  // px
   Eigen::MatrixX2d direction_;  // n x 2: descent direction per vertex (0 for fixed ones)
@@ -203,6 +210,7 @@ Multimesh comeshOptimize(const Multimesh& input, const ComeshBoundary* boundary,
           remesher.splitEdges(r.remesh);
         }
         const double residual = stepper.step(stepSize[i]);
+        remesher.keyMoved(i);
         if (options.remesh) remesher.collapseEdges(r.remesh);
         innerResidual = std::max(innerResidual, residual);
         if (residual < options.innerTolerance) break;

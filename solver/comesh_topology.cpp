@@ -110,30 +110,61 @@ double Remesher::chordDeviation(int k, int a, int b) const {
   return mesh_.chordDeviation(k, arc, mesh_.u(a, k), end);
 }
 
-Remesher::WorstAngle Remesher::worstAngle(const Triangle& tri) const {
-  WorstAngle worst;
-  for (int k = 0; k < mesh_.keyCount(); ++k) {
-    const auto& x = mesh_.keys[k];
-    double l[3];
-    for (int i = 0; i < 3; ++i) l[i] = (x.row(tri[(i + 1) % 3]) - x.row(tri[i])).squaredNorm();
-    const int i = (l[0] >= l[1] && l[0] >= l[2]) ? 0 : (l[1] >= l[2] ? 1 : 2);
-    const double other = l[(i + 1) % 3], third = l[(i + 2) % 3];
-    const double cosine = (other + third - l[i]) / (2 * std::sqrt(other * third));  // law of cosines
-    if (cosine < worst.cosine) worst = {cosine, i};
+Remesher::WorstAngle Remesher::keyWorstAngle(const Triangle& tri, int k) const {
+  const auto& x = mesh_.keys[k];
+  double l[3];
+  for (int i = 0; i < 3; ++i) l[i] = (x.row(tri[(i + 1) % 3]) - x.row(tri[i])).squaredNorm();
+  const int i = (l[0] >= l[1] && l[0] >= l[2]) ? 0 : (l[1] >= l[2] ? 1 : 2);
+  const double other = l[(i + 1) % 3], third = l[(i + 2) % 3];
+  return {(other + third - l[i]) / (2 * std::sqrt(other * third)), i};  // law of cosines
+}
+
+void Remesher::keyMoved(int k) { keyStale_.at(k) = 1; }
+
+void Remesher::refreshAngleCache() {
+  const int m = mesh_.keyCount();
+  const size_t count = mesh_.triangles.size();
+  keyStale_.resize(m, 1);
+  worst_.resize(count * m);
+  refusedBy_.resize(count, 0);
+  cachedCorners_.resize(count, Triangle{-1, -1, -1});
+  for (int k = 0; k < m; ++k) {
+    if (!keyStale_[k]) continue;
+    for (size_t t = 0; t < count; ++t)
+      if (cachedCorners_[t] == mesh_.triangles[t] && mesh_.triangles[t][0] >= 0)
+        worst_[t * m + k] = keyWorstAngle(mesh_.triangles[t], k);
+    keyStale_[k] = 0;
   }
+}
+
+Remesher::WorstAngle Remesher::worstAngle(int t) {
+  const int m = mesh_.keyCount();
+  const Triangle& tri = mesh_.triangles[t];
+  WorstAngle* cached = &worst_[static_cast<size_t>(t) * m];
+  if (cachedCorners_[t] != tri) {
+    for (int k = 0; k < m; ++k) cached[k] = keyWorstAngle(tri, k);
+    cachedCorners_[t] = tri;
+  }
+  WorstAngle worst;
+  for (int k = 0; k < m; ++k)
+    if (cached[k].cosine < worst.cosine) worst = cached[k];
   return worst;
 }
 
-bool Remesher::flipImproves(int a, int b, int c, int d, double before) const {
-  for (int k = 0; k < mesh_.keyCount(); ++k) {
+bool Remesher::flipImproves(int a, int b, int c, int d, double before, int& hint) const {
+  const int m = mesh_.keyCount();
+  // Every key must improve; the key that refused this triangle's flip last time is asked first,
+  // as it usually refuses again (the answer does not depend on the order).
+  for (int j = 0; j < m; ++j) {
+    const int k = (hint + j) % m;
     const auto& x = mesh_.keys[k];
     auto p = [&](int v) -> Eigen::Vector2d { return x.row(v).transpose(); };
-    const AngleRange after = [&] {
-      AngleRange r = angles(p(c), p(a), p(d));
-      r.add(angles(p(d), p(b), p(c)));
-      return r;
-    }();
-    if (after.degenerate() || !(after.largest > before + 1e-12)) return false;
+    AngleRange after = angles(p(c), p(a), p(d));
+    after.add(angles(p(d), p(b), p(c)));
+    if (after.degenerate() || !(after.largest > before + 1e-12)) {
+      hint = k;
+      return false;
+    }
   }
   return true;
 }
@@ -141,20 +172,22 @@ bool Remesher::flipImproves(int a, int b, int c, int d, double before) const {
 int Remesher::flipEdges(RemeshCounts& counts) {
   Timer timer(counts.flipSeconds);
   int flips = 0;
+  refreshAngleCache();
   for (size_t t = 0; t < mesh_.triangles.size(); ++t) {
     // A flip keeps the whole angles at the edge's ends, so it can only lower the largest angle of
     // the pair (over all keys) when that angle faces the edge: the only candidate of a triangle is
     // its longest edge in the key where its largest angle is largest. (The twin's candidate is
     // tried when the twin's turn comes.)
     const Triangle tri = mesh_.triangles[t];
-    const WorstAngle worst = worstAngle(tri);
+    if (tri[0] < 0) continue;
+    const WorstAngle worst = worstAngle(static_cast<int>(t));
     const int a = tri[worst.edge], b = tri[(worst.edge + 1) % 3];
     const int twin = mesh_.triangleWith(b, a);
     if (twin < 0) continue;  // boundary (and so every cohesive) edge
     const int c = tri[(worst.edge + 2) % 3], d = mesh_.thirdCorner(twin, b, a);
     if (c == d || (mesh_.onBoundary(c) && mesh_.onBoundary(d)) || connected(mesh_, c, d)) continue;
-    const double before = std::min(worst.cosine, worstAngle(mesh_.triangles[twin]).cosine);
-    if (!flipImproves(a, b, c, d, before)) continue;
+    const double before = std::min(worst.cosine, worstAngle(twin).cosine);
+    if (!flipImproves(a, b, c, d, before, refusedBy_[t])) continue;
     mesh_.flip(a, b);
     ++flips;
   }

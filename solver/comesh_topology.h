@@ -35,6 +35,10 @@ class Remesher {
   // How far boundary edge (a, b), a before b on the walk, strays from key k's outline (px).
   double chordDeviation(int k, int a, int b) const;
 
+  // Key k's positions have moved (a vertex step): the largest angles cached for the flip test are
+  // recomputed in that key before the next flip pass. Topology changes need no call.
+  void keyMoved(int k);
+
   // One pass over the edges each; return how many operations were applied.
   // Flip: an interior edge whose flip lowers the largest angle of its two triangles over all keys.
   int flipEdges(RemeshCounts& counts);
@@ -53,10 +57,16 @@ class Remesher {
     double cosine = 1;
     int edge = 0;
   };
-  WorstAngle worstAngle(const Triangle& tri) const;
+  // Over all keys, for triangle t, from the cache (refreshed for t if its corners changed).
+  WorstAngle worstAngle(int t);
+  // In key k alone.
+  WorstAngle keyWorstAngle(const Triangle& tri, int k) const;
+  // Brings the cache to the current triangle count and recomputes the keys that moved.
+  void refreshAngleCache();
   // Flipping (a, b) of triangles (a, b, c), (b, a, d) leaves every key positive and every new angle
-  // smaller than the largest before (given as its cosine).
-  bool flipImproves(int a, int b, int c, int d, double before) const;
+  // smaller than the largest before (given as its cosine). hint: the key to ask first; receives
+  // the key that refused.
+  bool flipImproves(int a, int b, int c, int d, double before, int& hint) const;
   bool trySplit(int a, int b);
   bool tryCollapse(int from, int to);
   bool collapsible(int from, int to) const;
@@ -70,6 +80,12 @@ class Remesher {
   RemeshOptions options_;
   double cosCollapse_;        // cosine of options_.collapseAngle
   std::vector<double> unit_;  // [key]: mean edge length at construction
+  // Largest angle of every triangle in every key, for the flip pass: the flip test needs it over
+  // all keys for every triangle, while a vertex step moves only one key.
+  std::vector<WorstAngle> worst_;        // [triangle * keys + key]
+  std::vector<Triangle> cachedCorners_;  // [triangle]: the corners worst_ was computed for
+  std::vector<char> keyStale_;           // [key]: positions moved since worst_ was computed
+  std::vector<int> refusedBy_;           // [triangle]: the key that last refused its flip (a hint)
 };
 
 }  // namespace ib

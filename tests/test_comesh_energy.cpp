@@ -1,3 +1,4 @@
+#include "comesh_block_energy.h"
 #include "comesh_energy.h"
 #include "mesh_quality.h"
 #include "shape_generators.h"
@@ -74,6 +75,39 @@ TEST_CASE("comesh energy: ODT, MIPS and the block objective match central differ
         keys[i]);
     CHECK((block - numeric).norm() <= 1e-6 * block.norm());
   }
+}
+
+TEST_CASE("comesh energy: the prepared block energy equals comeshBlockEnergy, value and gradient, for 1 to 4 keys") {
+  const GridMesh grid = rectangleGrid(6, 4, 3, 2);
+  const std::vector<Eigen::MatrixX2d> all = {jittered(grid, 7, 0.12),
+                                             similarity(jittered(grid, 8, 0.12), 0.3, 1.7, {4, -1}),
+                                             jittered(grid, 9, 0.12) * 0.8, similarity(jittered(grid, 10, 0.1), -1, 0.5, {0, 3})};
+  for (int m = 1; m <= 4; ++m) {
+    const std::vector<Eigen::MatrixX2d> keys(all.begin(), all.begin() + m);
+    for (int i = 0; i < m; ++i) {
+      Eigen::MatrixX2d reference, fast;
+      const double expected = comeshBlockEnergy(grid.triangles, keys, i, &reference, 0.7);
+      BlockEnergy block;
+      block.prepare(grid.triangles, keys, i, 0.7);
+      CHECK(block.evaluate(keys[i], &fast) == Approx(expected).epsilon(1e-12));
+      CHECK(block.evaluate(keys[i], nullptr) == Approx(expected).epsilon(1e-12));
+      CHECK((fast - reference).norm() <= 1e-12 * reference.norm());
+    }
+  }
+}
+
+TEST_CASE("comesh energy: the prepared block energy is infinite when a triangle is inverted in the key or a neighbour") {
+  const GridMesh grid = rectangleGrid(6, 4, 3, 2);
+  std::vector<Eigen::MatrixX2d> keys = {jittered(grid, 7, 0.12), jittered(grid, 8, 0.12)};
+  BlockEnergy block;
+  block.prepare(grid.triangles, keys, 0, 1);
+  Eigen::MatrixX2d folded = keys[0];
+  const Triangle& t = grid.triangles[5];
+  folded.row(t[0]) = 2 * (0.5 * (folded.row(t[1]) + folded.row(t[2]))) - folded.row(t[0]);  // across the far edge
+  CHECK(std::isinf(block.evaluate(folded, nullptr)));
+  keys[1] = folded;
+  block.prepare(grid.triangles, keys, 0, 1);
+  CHECK(std::isinf(block.evaluate(keys[0], nullptr)));
 }
 
 TEST_CASE("comesh energy: MIPS of a similarity map is 2 per unit area, and larger for any shear") {

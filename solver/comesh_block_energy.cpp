@@ -1,0 +1,132 @@
+#include "comesh_block_energy.h"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <limits>
+
+namespace ib {
+
+void BlockEnergy::prepare(const std::vector<Triangle>& triangles, const std::vector<Eigen::MatrixX2d>& keys, int i,
+                          double odtWeight) {
+  const int m = static_cast<int>(keys.size());
+  odtWeight_ = odtWeight;
+  neighbourInverted_ = false;
+  for (auto& c : corner_) c.clear();
+  for (auto* v : {&s00_, &s01_, &s11_, &q00_, &q01_, &q11_}) v->clear();
+  for (const Triangle& tri : triangles) {
+    if (tri[0] < 0) continue;
+    for (int c = 0; c < 3; ++c) corner_[c].push_back(tri[c]);
+    Eigen::Matrix2d S = Eigen::Matrix2d::Zero(), Q = Eigen::Matrix2d::Zero();
+    if (m >= 2) {
+      // With two keys, next and previous are the same key: both directions of its map.
+      const Eigen::Matrix2d next = edgeMatrix(keys[(i + 1) % m], tri);
+      const double nextArea = 0.5 * next.determinant();
+      if (nextArea > 0) S = next.transpose() * next / (4 * nextArea);
+      else neighbourInverted_ = true;
+      const Eigen::Matrix2d previous = edgeMatrix(keys[(i + m - 1) % m], tri);
+      Eigen::Matrix2d adj;
+      adj << previous(1, 1), -previous(0, 1), -previous(1, 0), previous(0, 0);
+      Q = adj * adj.transpose();
+    }
+    s00_.push_back(S(0, 0));
+    s01_.push_back(S(0, 1));
+    s11_.push_back(S(1, 1));
+    q00_.push_back(Q(0, 0));
+    q01_.push_back(Q(0, 1));
+    q11_.push_back(Q(1, 1));
+  }
+  count_ = static_cast<int>(corner_[0].size());
+}
+
+double BlockEnergy::evaluate(const Eigen::MatrixX2d& x, Eigen::MatrixX2d* gradient) const {
+  constexpr double kInfinity = std::numeric_limits<double>::infinity();
+  if (neighbourInverted_) return kInfinity;
+  const int t = count_;
+  scratch_.resize(12 * static_cast<size_t>(t));
+  // Per triangle: the edge matrix E, the unscaled ODT gradient and the MIPS gradient (each 2 x 2,
+  // row = coordinate, column = edge).
+  double* E00 = scratch_.data();
+  double* E01 = E00 + t;
+  double* E10 = E01 + t;
+  double* E11 = E10 + t;
+  double* O00 = E11 + t;
+  double* O01 = O00 + t;
+  double* O10 = O01 + t;
+  double* O11 = O10 + t;
+  double* M00 = O11 + t;
+  double* M01 = M00 + t;
+  double* M10 = M01 + t;
+  double* M11 = M10 + t;
+  const double* px = x.col(0).data();
+  const double* py = x.col(1).data();
+  const int* c0 = corner_[0].data();
+  const int* c1 = corner_[1].data();
+  const int* c2 = corner_[2].data();
+  const bool wantGradient = gradient != nullptr;
+  double odt = 0, area = 0, mips = 0, smallest = kInfinity;
+#pragma omp simd reduction(+ : odt, area, mips) reduction(min : smallest)
+  for (int k = 0; k < t; ++k) {
+    const double e00 = px[c1[k]] - px[c0[k]], e01 = px[c2[k]] - px[c0[k]];
+    const double e10 = py[c1[k]] - py[c0[k]], e11 = py[c2[k]] - py[c0[k]];
+    const double a = 0.5 * (e00 * e11 - e01 * e10);
+    smallest = std::min(smallest, a);
+    // ODT (eq. 4): a / 12 times the squared edge lengths, the third edge e1 - e0 = (t0, t1).
+    const double t0 = e01 - e00, t1 = e11 - e10;
+    const double squares = e00 * e00 + e10 * e10 + e01 * e01 + e11 * e11 + t0 * t0 + t1 * t1;
+    odt += a * squares / 12;
+    area += a;
+    // MIPS towards next: adj(E) has columns (e11, -e10) and (-e01, e00).
+    const double s00 = s00_[k], s01 = s01_[k], s11 = s11_[k];
+    const double d0x = s00 * e11 - s01 * e10, d0y = s01 * e11 - s11 * e10;  // S adj(E) e_0
+    const double d1x = -s00 * e01 + s01 * e00, d1y = -s01 * e01 + s11 * e00;  // S adj(E) e_1
+    const double toNext = e11 * d0x - e10 * d0y - e01 * d1x + e00 * d1y;
+    // MIPS from previous: tr(E Q E^T) / (4a), with E's rows (e00, e01) and (e10, e11).
+    const double q00 = q00_[k], q01 = q01_[k], q11 = q11_[k];
+    const double r00 = q00 * e00 + q01 * e01, r01 = q01 * e00 + q11 * e01;  // (E Q) row 0
+    const double r10 = q00 * e10 + q01 * e11, r11 = q01 * e10 + q11 * e11;  // (E Q) row 1
+    const double fromPrevious = (e00 * r00 + e01 * r01 + e10 * r10 + e11 * r11) / (4 * a);
+    mips += toNext + fromPrevious;
+    if (wantGradient) {
+      E00[k] = e00;
+      E01[k] = e01;
+      E10[k] = e10;
+      E11[k] = e11;
+      // d squares / dE: columns 2 e0 - 2 (e1 - e0) and 2 e1 + 2 (e1 - e0); d a / dE = cof(E) / 2.
+      const double half = 0.5 * squares;
+      O00[k] = (half * e11 + a * (2 * e00 - 2 * t0)) / 12;
+      O01[k] = (-half * e10 + a * (2 * e01 + 2 * t0)) / 12;
+      O10[k] = (-half * e01 + a * (2 * e10 - 2 * t1)) / 12;
+      O11[k] = (half * e00 + a * (2 * e11 + 2 * t1)) / 12;
+      // toNext: d/d adj(E) = 2 S adj(E), taken back through adj's entry map. fromPrevious:
+      // 2 E Q / (4a) - fromPrevious / a * cof(E) / 2.
+      const double over = 1 / (2 * a), shrink = fromPrevious * over;
+      M00[k] = 2 * d1y + r00 * over - shrink * e11;
+      M01[k] = -2 * d1x + r01 * over + shrink * e10;
+      M10[k] = -2 * d0y + r10 * over + shrink * e01;
+      M11[k] = 2 * d0x + r11 * over - shrink * e00;
+    }
+  }
+  if (!(smallest > 0)) return kInfinity;
+  const double energy = odtWeight_ * odt / area + mips;
+  if (!wantGradient) return energy;
+  // ODT / area by the quotient rule: (w / A) d odt - (w odt / A^2) d A, with d A = cof(E) / 2.
+  const double alpha = odtWeight_ / area, beta = -0.5 * odtWeight_ * odt / (area * area);
+  gradient->setZero(x.rows(), 2);
+  double* gx = gradient->col(0).data();
+  double* gy = gradient->col(1).data();
+  for (int k = 0; k < t; ++k) {
+    const double g00 = alpha * O00[k] + beta * E11[k] + M00[k];
+    const double g01 = alpha * O01[k] - beta * E10[k] + M01[k];
+    const double g10 = alpha * O10[k] - beta * E01[k] + M10[k];
+    const double g11 = alpha * O11[k] + beta * E00[k] + M11[k];
+    gx[c1[k]] += g00;
+    gy[c1[k]] += g10;
+    gx[c2[k]] += g01;
+    gy[c2[k]] += g11;
+    gx[c0[k]] -= g00 + g01;
+    gy[c0[k]] -= g10 + g11;
+  }
+  return energy;
+}
+
+}  // namespace ib

@@ -1,0 +1,43 @@
+// The block objective of Comesh Optimization's inner loop (comeshBlockEnergy in comesh_energy.h),
+// prepared for the many evaluations of one key's positions while every other key holds still.
+//
+// With the neighbours fixed, both MIPS terms of key i are closed forms in key i's edge matrix E
+// (2 x 2, columns x1 - x0 and x2 - x0) with a per-triangle 2 x 2 symmetric matrix:
+//   MIPS(X_i, X_next) = tr(adj(E)^T S adj(E)),  S = E_next^T E_next / (4 a_next)   (eq. 5)
+//   MIPS(X_prev, X_i) = tr(E Q E^T) / (4 a(E)),  Q = adj(E_prev) adj(E_prev)^T
+// so prepare() computes S and Q once (O(triangles)) and evaluate() reads only key i's positions,
+// in flat per-triangle arrays the compiler vectorizes. The value is comeshBlockEnergy's to
+// rounding (same terms, summed in another order).
+#pragma once
+
+#include "multimesh.h"
+
+#include <Eigen/Core>
+#include <vector>
+
+namespace ib {
+
+class BlockEnergy {
+ public:
+  // Prepares key i's block over `triangles` (positive in every key they are evaluated on; entries
+  // with a negative corner, deleted triangles, are skipped) with the other keys as they are now.
+  // odtWeight scales the ODT term, as in comeshBlockEnergy.
+  void prepare(const std::vector<Triangle>& triangles, const std::vector<Eigen::MatrixX2d>& keys, int i,
+               double odtWeight);
+
+  // The block energy at key i's positions x (n x 2), px^2; +infinity when a triangle is not
+  // positive in x or in a neighbouring key. Writes d/dx into `gradient` (n x 2) when given.
+  double evaluate(const Eigen::MatrixX2d& x, Eigen::MatrixX2d* gradient) const;
+
+ private:
+  int count_ = 0;                          // triangles kept
+  bool hasNext_ = false, hasPrevious_ = false;
+  bool neighbourInverted_ = false;         // a triangle not positive in a neighbouring key
+  double odtWeight_ = 1;
+  std::vector<int> corner_[3];             // [corner][triangle]: vertex indices
+  std::vector<double> s00_, s01_, s11_;    // S per triangle (MIPS towards the next key)
+  std::vector<double> q00_, q01_, q11_;    // Q per triangle (MIPS from the previous key)
+  mutable std::vector<double> scratch_;    // 12 x count_: edge matrices and gradient blocks
+};
+
+}  // namespace ib
