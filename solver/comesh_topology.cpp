@@ -97,6 +97,7 @@ Remesher::Remesher(ComeshMesh& mesh, const RemeshOptions& options)
       for (int i = 0; i < 3; ++i) sum += (mesh.keys[k].row(t[i]) - mesh.keys[k].row(t[(i + 1) % 3])).norm();
     unit_.push_back(sum / std::max<size_t>(3 * mesh.triangles.size(), 1));
   }
+  keyStale_.assign(mesh.keyCount(), 1);
 }
 
 double Remesher::relativeLength(int k, int a, int b) const {
@@ -124,7 +125,6 @@ void Remesher::keyMoved(int k) { keyStale_.at(k) = 1; }
 void Remesher::refreshAngleCache() {
   const int m = mesh_.keyCount();
   const size_t count = mesh_.triangles.size();
-  keyStale_.resize(m, 1);
   worst_.resize(count * m);
   refusedBy_.resize(count, 0);
   cachedCorners_.resize(count, Triangle{-1, -1, -1});

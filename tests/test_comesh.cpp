@@ -212,3 +212,20 @@ TEST_CASE("comesh: without boundary data the boundary stays where it is") {
     }
   }
 }
+
+TEST_CASE("comesh: with remeshing off, vertex steps alone keep the topology and lower the objective on every Comesh scene") {
+  const std::string folder = test::scratchDirectory("comesh-steps");
+  for (const auto& example : test::comeshScenes()) {
+    INFO(example.name);
+    const Scene scene = writeAndLoad(example, folder);
+    const BuiltScene built = buildMultimesh(scene, MultimeshBuildOptions{});
+    ComeshOptions options;
+    options.remesh = false;
+    options.outerIterations = 5;
+    ComeshReport report;
+    const Multimesh result = comeshOptimize(*built.multimesh, &built.boundary, options, &report);
+    CHECK(result.triangles() == built.multimesh->triangles());
+    CHECK(report.remesh.flips + report.remesh.splits + report.remesh.collapses == 0);
+    CHECK(report.energyOut < report.energyIn * (1 - 1e-4));
+  }
+}
