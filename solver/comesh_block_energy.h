@@ -1,13 +1,16 @@
-// The block objective of Comesh Optimization's inner loop (comeshBlockEnergy in comesh_energy.h),
-// prepared for the many evaluations of one key's positions while every other key holds still.
+// The block objective of Comesh Optimization's inner loop: the part of eq. 8 that depends on key
+// i's positions, ODT(X_i) / area(X_i) (scaled by an ODT weight) + MIPS(X_i, X_[i+1]) +
+// MIPS(X_[i-1], X_i), indices cyclic (for two keys both MIPS directions between them; for one key
+// ODT alone). Units: length^2. Prepared for the many evaluations of one key's positions while
+// every other key holds still.
 //
 // With the neighbours fixed, both MIPS terms of key i are closed forms in key i's edge matrix E
 // (2 x 2, columns x1 - x0 and x2 - x0) with a per-triangle 2 x 2 symmetric matrix:
 //   MIPS(X_i, X_next) = tr(adj(E)^T S adj(E)),  S = E_next^T E_next / (4 a_next)   (eq. 5)
 //   MIPS(X_prev, X_i) = tr(E Q E^T) / (4 a(E)),  Q = adj(E_prev) adj(E_prev)^T
 // so prepare() computes S and Q once (O(triangles)) and evaluate() reads only key i's positions,
-// in flat per-triangle arrays the compiler vectorizes. The value is comeshBlockEnergy's to
-// rounding (same terms, summed in another order).
+// in flat per-triangle arrays the compiler vectorizes. comeshEnergy (comesh_energy.h) minus this
+// block does not depend on X_i.
 #pragma once
 
 #include "multimesh.h"
@@ -21,7 +24,7 @@ class BlockEnergy {
  public:
   // Prepares key i's block over `triangles` (positive in every key they are evaluated on; entries
   // with a negative corner, deleted triangles, are skipped) with the other keys as they are now.
-  // odtWeight scales the ODT term, as in comeshBlockEnergy.
+  // odtWeight scales the ODT term (comeshEnergy's odtWeights[i]).
   void prepare(const std::vector<Triangle>& triangles, const std::vector<Eigen::MatrixX2d>& keys, int i,
                double odtWeight);
 

@@ -84,26 +84,4 @@ double comeshEnergy(const std::vector<Triangle>& triangles, const std::vector<Ei
   return energy;
 }
 
-double comeshBlockEnergy(const std::vector<Triangle>& triangles, const std::vector<Eigen::MatrixX2d>& keys, int i,
-                         Eigen::MatrixX2d* gradient, double odtWeight) {
-  const int m = static_cast<int>(keys.size());
-  const Eigen::MatrixX2d& x = keys[i];
-  if (gradient) gradient->setZero(x.rows(), 2);
-  // ODT / area, by the quotient rule.
-  Eigen::MatrixX2d odtGradient = Eigen::MatrixX2d::Zero(x.rows(), 2);
-  const double odt = odtEnergy(triangles, x, gradient ? &odtGradient : nullptr);
-  const double area = totalArea(triangles, x);
-  double energy = odtWeight * odt / area;
-  if (gradient) {
-    Eigen::MatrixX2d areaGrad = Eigen::MatrixX2d::Zero(x.rows(), 2);
-    for (const Triangle& t : triangles) scatter(areaGrad, t, areaGradient(edgeMatrix(x, t)));
-    *gradient += odtWeight * (odtGradient / area - odt / (area * area) * areaGrad);
-  }
-  if (m < 2) return energy;
-  const int next = (i + 1) % m, previous = (i + m - 1) % m;
-  energy += mipsEnergy(triangles, x, keys[next], gradient, nullptr);
-  energy += mipsEnergy(triangles, keys[previous], x, nullptr, gradient);
-  return energy;
-}
-
 }  // namespace ib

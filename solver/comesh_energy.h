@@ -31,11 +31,4 @@ double totalArea(const std::vector<Triangle>& triangles, const Eigen::MatrixX2d&
 double comeshEnergy(const std::vector<Triangle>& triangles, const std::vector<Eigen::MatrixX2d>& keys,
                     const std::vector<double>& odtWeights = {});
 
-// The part of eq. 8 that depends on key i's positions: ODT(X_i) / area(X_i) + MIPS(X_i, X_[i+1])
-// + MIPS(X_[i-1], X_i), indices cyclic over `keys` (for two keys both MIPS directions between
-// them; for one key ODT alone), the ODT term scaled by `odtWeight`. Units: length^2. Writes d/dX_i
-// into `gradient` (n x 2) when given.
-double comeshBlockEnergy(const std::vector<Triangle>& triangles, const std::vector<Eigen::MatrixX2d>& keys, int i,
-                         Eigen::MatrixX2d* gradient, double odtWeight = 1);
-
 }  // namespace ib

@@ -65,33 +65,32 @@ TEST_CASE("comesh energy: ODT, MIPS and the block objective match central differ
   const std::vector<Eigen::MatrixX2d> keys = {a, b, c};
   for (int i = 0; i < 3; ++i) {
     Eigen::MatrixX2d block;
-    comeshBlockEnergy(t, keys, i, &block);
-    const Eigen::MatrixX2d numeric = numericGradient(
-        [&](const Eigen::MatrixX2d& x) {
-          std::vector<Eigen::MatrixX2d> k = keys;
-          k[i] = x;
-          return comeshBlockEnergy(t, k, i, nullptr);
-        },
-        keys[i]);
+    BlockEnergy energy;
+    energy.prepare(t, keys, i, 1);
+    energy.evaluate(keys[i], &block);
+    const Eigen::MatrixX2d numeric =
+        numericGradient([&](const Eigen::MatrixX2d& x) { return energy.evaluate(x, nullptr); }, keys[i]);
     CHECK((block - numeric).norm() <= 1e-6 * block.norm());
   }
 }
 
-TEST_CASE("comesh energy: the prepared block energy equals comeshBlockEnergy, value and gradient, for 1 to 4 keys") {
+TEST_CASE("comesh energy: eq. 8 minus key i's block energy does not depend on X_i, for 1 to 4 keys") {
   const GridMesh grid = rectangleGrid(6, 4, 3, 2);
   const std::vector<Eigen::MatrixX2d> all = {jittered(grid, 7, 0.12),
                                              similarity(jittered(grid, 8, 0.12), 0.3, 1.7, {4, -1}),
                                              jittered(grid, 9, 0.12) * 0.8, similarity(jittered(grid, 10, 0.1), -1, 0.5, {0, 3})};
+  const std::vector<double> odtWeights = {0.7, 1.3, 0.4, 2.0};
   for (int m = 1; m <= 4; ++m) {
-    const std::vector<Eigen::MatrixX2d> keys(all.begin(), all.begin() + m);
+    std::vector<Eigen::MatrixX2d> keys(all.begin(), all.begin() + m);
+    const std::vector<double> weights(odtWeights.begin(), odtWeights.begin() + m);
     for (int i = 0; i < m; ++i) {
-      Eigen::MatrixX2d reference, fast;
-      const double expected = comeshBlockEnergy(grid.triangles, keys, i, &reference, 0.7);
       BlockEnergy block;
-      block.prepare(grid.triangles, keys, i, 0.7);
-      CHECK(block.evaluate(keys[i], &fast) == Approx(expected).epsilon(1e-12));
-      CHECK(block.evaluate(keys[i], nullptr) == Approx(expected).epsilon(1e-12));
-      CHECK((fast - reference).norm() <= 1e-12 * reference.norm());
+      block.prepare(grid.triangles, keys, i, weights[i]);
+      const double rest = comeshEnergy(grid.triangles, keys, weights) - block.evaluate(keys[i], nullptr);
+      std::vector<Eigen::MatrixX2d> moved = keys;
+      moved[i] = similarity(jittered(grid, 20 + i, 0.1), 0.2, 1.1, {0.5, 0});
+      const double movedRest = comeshEnergy(grid.triangles, moved, weights) - block.evaluate(moved[i], nullptr);
+      CHECK(movedRest == Approx(rest).epsilon(1e-10).margin(1e-10 * comeshEnergy(grid.triangles, keys, weights)));
     }
   }
 }
