@@ -23,7 +23,8 @@ constexpr const char* kUsage =
     "\n"
     "Comesh Optimization (paper Algorithm 1, fixed parameters) on bundled scenes. One JSON line per\n"
     "case: vertices_in/out, keys, outer, inner, flips/splits/collapses and their seconds, seconds\n"
-    "(Comesh alone) and build_seconds (tracing, meshing and the initial map, not included).\n"
+    "(Comesh alone), build_seconds (tracing, meshing and the initial map, not included) and\n"
+    "energy_in/out (eq. 8 before and after, px^2).\n"
     "\n"
     "  --sizes LIST   approximate vertex counts for square-hexagon (default 300,1k,17k,100k)\n"
     "  --keys LIST    key counts taken from star-sequence's 16 keys (default 2,4,8,16)\n"
@@ -57,7 +58,7 @@ nlohmann::json runCase(Scene scene, const std::string& label) {
           {"splits", r.remesh.splits},   {"collapses", r.remesh.collapses},
           {"flip_seconds", r.remesh.flipSeconds}, {"split_seconds", r.remesh.splitSeconds},
           {"collapse_seconds", r.remesh.collapseSeconds}, {"seconds", r.seconds},
-          {"build_seconds", buildSeconds}};
+          {"build_seconds", buildSeconds}, {"energy_in", r.energyIn}, {"energy_out", r.energyOut}};
 }
 
 void print(const nlohmann::json& line) {

@@ -146,8 +146,13 @@ class VertexStepper {
   }
 
   bool oneRingPositive(int v) const {
-    for (int t : mesh_.around[v])
-      if (!(edgeMatrix(mesh_.keys[key_], mesh_.triangles[t]).determinant() > 0)) return false;
+    const double* x = mesh_.keys[key_].col(0).data();
+    const double* y = mesh_.keys[key_].col(1).data();
+    for (int t : mesh_.around[v]) {
+      const Triangle& c = mesh_.triangles[t];
+      const double twiceArea = (x[c[1]] - x[c[0]]) * (y[c[2]] - y[c[0]]) - (x[c[2]] - x[c[0]]) * (y[c[1]] - y[c[0]]);
+      if (!(twiceArea > 0)) return false;
+    }
     return true;
   }
 

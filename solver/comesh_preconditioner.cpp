@@ -1,6 +1,5 @@
 #include "comesh_preconditioner.h"
 
-#include <stdexcept>
 
 namespace ib {
 
@@ -34,23 +33,24 @@ void SobolevPreconditioner::update(const ComeshMesh& mesh) {
   for (int& v : valence_) v /= 2;
   Eigen::SparseMatrix<double> matrix(count, count);
   matrix.setFromTriplets(entries.begin(), entries.end());
-  factor_.compute(matrix);
-  if (factor_.info() != Eigen::Success) throw std::runtime_error("Comesh preconditioner: factorization failed");
+  unknowns_ = count;
+  factor_ = CholeskyPreconditioner(1);
+  if (count > 0) factor_.factorize(matrix);
 }
 
 void SobolevPreconditioner::apply(const ComeshMesh& mesh, const Eigen::MatrixX2d& gradient,
                                   Eigen::MatrixX2d& direction) const {
   const int n = mesh.vertexCount();
   direction.setZero(n, 2);
-  Eigen::MatrixX2d rhs(factor_.rows(), 2);
+  Eigen::MatrixX2d rhs(unknowns_, 2);
   for (int v = 0; v < n; ++v) {
     if (unknown_[v] >= 0) rhs.row(unknown_[v]) = gradient.row(v);
     else direction.row(v) = -gradient.row(v) / (valence_[v] + 1);
   }
   if (rhs.rows() == 0) return;
-  const Eigen::MatrixX2d solved = factor_.solve(rhs);
+  factor_.solve(rhs);
   for (int v = 0; v < n; ++v)
-    if (unknown_[v] >= 0) direction.row(v) = -solved.row(unknown_[v]);
+    if (unknown_[v] >= 0) direction.row(v) = -rhs.row(unknown_[v]);
 }
 
 }  // namespace ib

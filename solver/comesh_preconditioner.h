@@ -7,10 +7,10 @@
 // collapses, which change the vertex set, it is rebuilt at once.
 #pragma once
 
+#include "cholesky_preconditioner.h"
 #include "comesh_mesh.h"
 
 #include <Eigen/Core>
-#include <Eigen/SparseCholesky>
 #include <vector>
 
 namespace ib {
@@ -21,7 +21,7 @@ class SobolevPreconditioner {
   // `refreshAfter` calls.
   void update(const ComeshMesh& mesh);
 
-  int refreshAfter = 25;  // calls between refactorizations while only flips happen. Default 25.
+  int refreshAfter = 100;  // calls between refactorizations while only flips happen. Default 100.
 
   // direction (n x 2) = -(L + I)^-1 gradient on interior vertices, -gradient / (valence + 1) on
   // the others (the local scale of the same operator).
@@ -32,7 +32,8 @@ class SobolevPreconditioner {
   int age_ = 0;                                 // update() calls since
   std::vector<int> unknown_;  // [vertex]: row in L, or -1 (boundary, fixed, or without triangles)
   std::vector<int> valence_;  // [vertex]
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> factor_;
+  CholeskyPreconditioner factor_{1};  // of L + I; analysed anew with every rebuild (the pattern changes)
+  int unknowns_ = 0;                  // rows of L
 };
 
 }  // namespace ib

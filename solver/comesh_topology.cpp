@@ -33,6 +33,22 @@ AngleRange angles(const Eigen::Vector2d& p0, const Eigen::Vector2d& p1, const Ei
   return range;
 }
 
+bool sameCorners(const Triangle& a, const Triangle& b) { return a[0] == b[0] && a[1] == b[1] && a[2] == b[2]; }
+
+// Cosine of the largest angle of triangle (p0, p1, p2) by the law of cosines, or -1 (180 degrees)
+// when the triangle is not positive.
+double largestAngleCosine(const double* x, const double* y, int p0, int p1, int p2) {
+  const double ax = x[p1] - x[p0], ay = y[p1] - y[p0], bx = x[p2] - x[p0], by = y[p2] - y[p0];
+  if (!(ax * by - ay * bx > 0)) return -1;
+  const double cx = bx - ax, cy = by - ay;
+  const double l0 = ax * ax + ay * ay, l1 = cx * cx + cy * cy, l2 = bx * bx + by * by;  // edges 01, 12, 20
+  // The largest angle faces the longest edge.
+  const double longest = std::max({l0, l1, l2});
+  const double others = l0 + l1 + l2 - longest;
+  const double product = longest == l0 ? l1 * l2 : (longest == l1 ? l0 * l2 : l0 * l1);
+  return (others - longest) / (2 * std::sqrt(product));
+}
+
 class Timer {
  public:
   explicit Timer(double& seconds) : seconds_(seconds), start_(std::chrono::steady_clock::now()) {}
@@ -127,11 +143,12 @@ void Remesher::refreshAngleCache() {
   const size_t count = mesh_.triangles.size();
   worst_.resize(count * m);
   refusedBy_.resize(count, 0);
+  twin_.resize(count, -1);
   cachedCorners_.resize(count, Triangle{-1, -1, -1});
   for (int k = 0; k < m; ++k) {
     if (!keyStale_[k]) continue;
     for (size_t t = 0; t < count; ++t)
-      if (cachedCorners_[t] == mesh_.triangles[t] && mesh_.triangles[t][0] >= 0)
+      if (sameCorners(cachedCorners_[t], mesh_.triangles[t]) && mesh_.triangles[t][0] >= 0)
         worst_[t * m + k] = keyWorstAngle(mesh_.triangles[t], k);
     keyStale_[k] = 0;
   }
@@ -141,7 +158,7 @@ Remesher::WorstAngle Remesher::worstAngle(int t) {
   const int m = mesh_.keyCount();
   const Triangle& tri = mesh_.triangles[t];
   WorstAngle* cached = &worst_[static_cast<size_t>(t) * m];
-  if (cachedCorners_[t] != tri) {
+  if (!sameCorners(cachedCorners_[t], tri)) {
     for (int k = 0; k < m; ++k) cached[k] = keyWorstAngle(tri, k);
     cachedCorners_[t] = tri;
   }
@@ -157,16 +174,25 @@ bool Remesher::flipImproves(int a, int b, int c, int d, double before, int& hint
   // as it usually refuses again (the answer does not depend on the order).
   for (int j = 0; j < m; ++j) {
     const int k = (hint + j) % m;
-    const auto& x = mesh_.keys[k];
-    auto p = [&](int v) -> Eigen::Vector2d { return x.row(v).transpose(); };
-    AngleRange after = angles(p(c), p(a), p(d));
-    after.add(angles(p(d), p(b), p(c)));
-    if (after.degenerate() || !(after.largest > before + 1e-12)) {
+    const double* x = mesh_.keys[k].col(0).data();
+    const double* y = mesh_.keys[k].col(1).data();
+    const double after = std::min(largestAngleCosine(x, y, c, a, d), largestAngleCosine(x, y, d, b, c));
+    if (!(after > before + 1e-12)) {
       hint = k;
       return false;
     }
   }
   return true;
+}
+
+int Remesher::twinOf(int t, int a, int b) {
+  const int cached = twin_[t];
+  if (cached >= 0 && cached < static_cast<int>(mesh_.triangles.size())) {
+    const Triangle& c = mesh_.triangles[cached];
+    for (int i = 0; i < 3; ++i)
+      if (c[i] == b && c[(i + 1) % 3] == a) return cached;
+  }
+  return twin_[t] = mesh_.triangleWith(b, a);
 }
 
 int Remesher::flipEdges(RemeshCounts& counts) {
@@ -181,13 +207,18 @@ int Remesher::flipEdges(RemeshCounts& counts) {
     const Triangle tri = mesh_.triangles[t];
     if (tri[0] < 0) continue;
     const WorstAngle worst = worstAngle(static_cast<int>(t));
+    // The new triangles' angles at a and b are sums of the old ones, which add up to 360 degrees
+    // minus the two angles facing the edge: one of them is at least 180 minus the largest angle.
+    // So no flip helps unless the largest angle is obtuse, and if it is only the twin's, the
+    // twin's turn tries the same edge.
+    if (worst.cosine >= 0) continue;
     const int a = tri[worst.edge], b = tri[(worst.edge + 1) % 3];
-    const int twin = mesh_.triangleWith(b, a);
+    const int twin = twinOf(static_cast<int>(t), a, b);
     if (twin < 0) continue;  // boundary (and so every cohesive) edge
     const int c = tri[(worst.edge + 2) % 3], d = mesh_.thirdCorner(twin, b, a);
-    if (c == d || (mesh_.onBoundary(c) && mesh_.onBoundary(d)) || connected(mesh_, c, d)) continue;
+    if (c == d || (mesh_.onBoundary(c) && mesh_.onBoundary(d))) continue;
     const double before = std::min(worst.cosine, worstAngle(twin).cosine);
-    if (!flipImproves(a, b, c, d, before, refusedBy_[t])) continue;
+    if (!flipImproves(a, b, c, d, before, refusedBy_[t]) || connected(mesh_, c, d)) continue;
     mesh_.flip(a, b);
     ++flips;
   }
@@ -218,8 +249,10 @@ int Remesher::splitEdges(RemeshCounts& counts) {
       const int a = tri[i], b = tri[(i + 1) % 3];
       if (a < 0) continue;
       bool longEverywhere = true;
-      for (int k = 0; k < mesh_.keyCount() && longEverywhere; ++k)
-        longEverywhere = relativeLength(k, a, b) > options_.splitLength;
+      for (int k = 0; k < mesh_.keyCount() && longEverywhere; ++k) {
+        const double bound = options_.splitLength * unit_[k];
+        longEverywhere = (mesh_.keys[k].row(a) - mesh_.keys[k].row(b)).squaredNorm() > bound * bound;
+      }
       if (!longEverywhere || (a > b && mesh_.triangleWith(b, a) >= 0)) continue;  // inside edges once
       if (trySplit(a, b)) ++splits;
     }
@@ -283,12 +316,21 @@ bool Remesher::trySplit(int a, int b) {
 }
 
 bool Remesher::collapseCandidate(int a, int b, int c) const {
+  // Squared lengths against squared bounds, and the angle at c by the sign and square of its cosine:
+  // no square roots (this runs on every edge in every pass).
   bool shortEverywhere = true, thinEverywhere = true;
+  const double cosine2 = cosCollapse_ * cosCollapse_;
   for (int k = 0; k < mesh_.keyCount() && (shortEverywhere || thinEverywhere); ++k) {
-    const auto& x = mesh_.keys[k];
-    shortEverywhere = shortEverywhere && relativeLength(k, a, b) < options_.collapseLength;
-    const Eigen::Vector2d e1 = (x.row(a) - x.row(c)).transpose(), e2 = (x.row(b) - x.row(c)).transpose();
-    thinEverywhere = thinEverywhere && e1.dot(e2) / std::sqrt(e1.squaredNorm() * e2.squaredNorm()) > cosCollapse_;
+    const double* x = mesh_.keys[k].col(0).data();
+    const double* y = mesh_.keys[k].col(1).data();
+    const double ax = x[a] - x[c], ay = y[a] - y[c], bx = x[b] - x[c], by = y[b] - y[c];
+    const double ex = x[a] - x[b], ey = y[a] - y[b];
+    const double bound = options_.collapseLength * unit_[k];
+    shortEverywhere = shortEverywhere && ex * ex + ey * ey < bound * bound;
+    const double dot = ax * bx + ay * by, limit2 = cosine2 * (ax * ax + ay * ay) * (bx * bx + by * by);
+    // dot / |a - c| |b - c| > cosCollapse_, squared on the side of cosCollapse_'s sign
+    const bool thin = cosCollapse_ >= 0 ? (dot > 0 && dot * dot > limit2) : (dot >= 0 || dot * dot < limit2);
+    thinEverywhere = thinEverywhere && thin;
   }
   return shortEverywhere || thinEverywhere;
 }
@@ -303,7 +345,7 @@ int Remesher::collapseEdges(RemeshCounts& counts) {
       if (a < 0 || !collapseCandidate(a, b, tri[(i + 2) % 3])) continue;
       if (tryCollapse(a, b) || tryCollapse(b, a)) ++collapses;
     }
-  mesh_.compact();
+  if (collapses > 0) mesh_.compact();
   counts.collapses += collapses;
   return collapses;
 }

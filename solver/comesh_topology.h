@@ -67,6 +67,9 @@ class Remesher {
   // smaller than the largest before (given as its cosine). hint: the key to ask first; receives
   // the key that refused.
   bool flipImproves(int a, int b, int c, int d, double before, int& hint) const;
+  // The triangle across edge (a, b) of triangle t (b -> a), or -1; remembered per triangle and
+  // checked before use, as the topology changes.
+  int twinOf(int t, int a, int b);
   bool trySplit(int a, int b);
   bool tryCollapse(int from, int to);
   bool collapsible(int from, int to) const;
@@ -86,6 +89,7 @@ class Remesher {
   std::vector<Triangle> cachedCorners_;  // [triangle]: the corners worst_ was computed for
   std::vector<char> keyStale_;           // [key]: positions moved since worst_ was computed
   std::vector<int> refusedBy_;           // [triangle]: the key that last refused its flip (a hint)
+  std::vector<int> twin_;                // [triangle]: the last twin found by twinOf (a hint), or -1
 };
 
 }  // namespace ib
