@@ -7,6 +7,7 @@
 #include <Eigen/Dense>
 #include <chrono>
 #include <cmath>
+#include <omp.h>
 
 namespace ib {
 
@@ -19,9 +20,11 @@ class VertexStepper {
     double minimumGap, maximumGap, chordTolerance;  // px
   };
   VertexStepper(ComeshMesh& mesh, SobolevPreconditioner& preconditioner, int key, double odtWeight,
-                const Bounds& bounds)
+                const Bounds& bounds, int threads)
       : mesh_(mesh), preconditioner_(preconditioner), key_(key), odtWeight_(odtWeight), minimumGap_(bounds.minimumGap), maximumGap_(bounds.maximumGap),
-        chordTolerance_(bounds.chordTolerance) {}
+        chordTolerance_(bounds.chordTolerance) {
+    energy_.setThreads(threads);
+  }
 
   // Returns the relative energy decrease (0 when no step lowered the energy). `stepSize` carries
   // over between calls: it grows after a success and shrinks while a step fails.
@@ -86,35 +89,58 @@ class VertexStepper {
     return {lo, hi};
   }
 
-  // Every movable vertex goes `stepSize` along its direction, halved until its one-ring stays positive.
+  // Every movable vertex goes `stepSize` along its direction, halved until its one-ring stays
+  // positive (and a sliding vertex keeps its gaps and follows the outline). Interior vertices take
+  // the whole step at once first: when every triangle stays positive, the common case, only the
+  // sliding vertices go one by one; else every vertex does, from the start.
   void moveVertices(const Eigen::MatrixX2d& start, const Eigen::VectorXd& startU, double stepSize) {
     Eigen::MatrixX2d& x = mesh_.keys[key_];
     x = start;
     mesh_.u.col(key_) = startU;
-    for (int v = 0; v < x.rows(); ++v) {
-      if (direction_.row(v).isZero()) continue;
-      const double allowance = slide_[v] != 0 ? outlineAllowance(v) : 0.0;
-      double scale = stepSize;
-      for (int halving = 0; halving < 30; ++halving, scale *= 0.5) {
-        if (slide_[v] != 0) {
-          const double u = startU[v] + scale * slide_[v];
-          const auto [lo, hi] = slideRange(v);
-          if (!(u > lo && u < hi)) continue;
-          x.row(v) = mesh_.point(key_, mesh_.arc[v], u).transpose();
-          mesh_.u(v, key_) = u;
-          if (!keepsGap(v) || !followsOutline(v, allowance)) {
-            x.row(v) = start.row(v);
-            mesh_.u(v, key_) = startU[v];
-            continue;
-          }
-        } else {
-          x.row(v) = start.row(v) + scale * direction_.row(v);
+    const int n = static_cast<int>(x.rows());
+    for (int v = 0; v < n; ++v)
+      if (slide_[v] == 0) x.row(v) += stepSize * direction_.row(v);  // zero rows for the still ones
+    const bool together = everyTrianglePositive();
+    if (!together) x = start;
+    for (int v = 0; v < n; ++v)
+      if ((!together && !direction_.row(v).isZero()) || slide_[v] != 0) moveVertex(v, start, startU, stepSize);
+  }
+
+  // Vertex v from its start, `stepSize` along its direction, halved until it fits, else back at its start.
+  void moveVertex(int v, const Eigen::MatrixX2d& start, const Eigen::VectorXd& startU, double stepSize) {
+    Eigen::MatrixX2d& x = mesh_.keys[key_];
+    const double allowance = slide_[v] != 0 ? outlineAllowance(v) : 0.0;
+    double scale = stepSize;
+    for (int halving = 0; halving < 30; ++halving, scale *= 0.5) {
+      if (slide_[v] != 0) {
+        const double u = startU[v] + scale * slide_[v];
+        const auto [lo, hi] = slideRange(v);
+        if (!(u > lo && u < hi)) continue;
+        x.row(v) = mesh_.point(key_, mesh_.arc[v], u).transpose();
+        mesh_.u(v, key_) = u;
+        if (!keepsGap(v) || !followsOutline(v, allowance)) {
+          x.row(v) = start.row(v);
+          mesh_.u(v, key_) = startU[v];
+          continue;
         }
-        if (oneRingPositive(v)) break;
-        x.row(v) = start.row(v);
-        mesh_.u(v, key_) = startU[v];
+      } else {
+        x.row(v) = start.row(v) + scale * direction_.row(v);
       }
+      if (oneRingPositive(v)) return;
+      x.row(v) = start.row(v);
+      mesh_.u(v, key_) = startU[v];
     }
+  }
+
+  bool everyTrianglePositive() const {
+    const double* x = mesh_.keys[key_].col(0).data();
+    const double* y = mesh_.keys[key_].col(1).data();
+    for (const Triangle& c : mesh_.triangles) {
+      if (c[0] < 0) continue;
+      const double twiceArea = (x[c[1]] - x[c[0]]) * (y[c[2]] - y[c[0]]) - (x[c[2]] - x[c[0]]) * (y[c[1]] - y[c[0]]);
+      if (!(twiceArea > 0)) return false;
+    }
+    return true;
   }
 
   // A sliding vertex stays between `minimumGap_` and `maximumGap_` from its walk neighbours, so
@@ -189,7 +215,9 @@ Multimesh comeshOptimize(const Multimesh& input, const ComeshBoundary* boundary,
   const auto started = std::chrono::steady_clock::now();
   ComeshMesh mesh(input, boundary);
   Remesher remesher(mesh, options.bounds);
-  SobolevPreconditioner preconditioner;
+  // Below a few thousand vertices a thread's share of a step is shorter than waking it.
+  const int threads = mesh.vertexCount() < 4000 ? 1 : (options.threads > 0 ? options.threads : omp_get_max_threads());
+  SobolevPreconditioner preconditioner(threads);
   const std::vector<double> odtWeights = balancedOdtWeights(mesh, remesher, options.odtBalance);
   const int m = mesh.keyCount();
   std::vector<double> stepSize(m, 0.0);
@@ -206,7 +234,8 @@ Multimesh comeshOptimize(const Multimesh& input, const ComeshBoundary* boundary,
       const double unit = remesher.unitLength(i);
       VertexStepper stepper(mesh, preconditioner, i, odtWeights[i],
                             {options.bounds.collapseLength * unit, options.bounds.splitLength * unit,
-                             options.bounds.chordTolerance * unit});
+                             options.bounds.chordTolerance * unit},
+                            threads);
       double innerResidual = 0;
       for (int inner = 0; inner < options.innerIterations; ++inner) {
         ++r.innerIterations;

@@ -26,6 +26,7 @@ struct ComeshOptions {
   // both terms are areas, balanced at any resolution. Default 1.
   double odtBalance = 1;
   bool remesh = true;            // flips, splits and collapses; off: vertex steps only. Default on.
+  int threads = 0;               // threads for the preconditioner's solves; 0 = all cores. Default 0.
   RemeshOptions bounds;          // when to split and collapse (comesh_topology.h)
   // Called after each outer iteration with the iterations done so far, for progress display. Optional.
   std::function<void(int outer, double energy)> progress;

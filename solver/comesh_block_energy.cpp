@@ -1,7 +1,10 @@
 #include "comesh_block_energy.h"
 
+#include "thread_block.h"
+
 #include <Eigen/Dense>
 #include <algorithm>
+#include <array>
 #include <limits>
 
 namespace ib {
@@ -63,48 +66,65 @@ double BlockEnergy::evaluate(const Eigen::MatrixX2d& x, Eigen::MatrixX2d* gradie
   const int* c1 = corner_[1].data();
   const int* c2 = corner_[2].data();
   const bool wantGradient = gradient != nullptr;
-  double odt = 0, area = 0, mips = 0, smallest = kInfinity;
+  // Each thread sums its own block of triangles; the sums are added in thread order afterwards,
+  // so the energy is bit-identical from run to run (thread_block.h).
+  const int threads = t >= kParallelTriangles ? threads_ : 1;
+  std::vector<std::array<double, 4>> partial(threads);  // odt, area, mips, smallest
+#pragma omp parallel num_threads(threads)
+  {
+    const auto [first, size] = rowBlock(t);
+    const int begin = static_cast<int>(first), end = static_cast<int>(first + size);
+    double odt = 0, area = 0, mips = 0, smallest = kInfinity;
 #pragma omp simd reduction(+ : odt, area, mips) reduction(min : smallest)
-  for (int k = 0; k < t; ++k) {
-    const double e00 = px[c1[k]] - px[c0[k]], e01 = px[c2[k]] - px[c0[k]];
-    const double e10 = py[c1[k]] - py[c0[k]], e11 = py[c2[k]] - py[c0[k]];
-    const double a = 0.5 * (e00 * e11 - e01 * e10);
-    smallest = std::min(smallest, a);
-    // ODT (eq. 4): a / 12 times the squared edge lengths, the third edge e1 - e0 = (t0, t1).
-    const double t0 = e01 - e00, t1 = e11 - e10;
-    const double squares = e00 * e00 + e10 * e10 + e01 * e01 + e11 * e11 + t0 * t0 + t1 * t1;
-    odt += a * squares / 12;
-    area += a;
-    // MIPS towards next: adj(E) has columns (e11, -e10) and (-e01, e00).
-    const double s00 = s00_[k], s01 = s01_[k], s11 = s11_[k];
-    const double d0x = s00 * e11 - s01 * e10, d0y = s01 * e11 - s11 * e10;  // S adj(E) e_0
-    const double d1x = -s00 * e01 + s01 * e00, d1y = -s01 * e01 + s11 * e00;  // S adj(E) e_1
-    const double toNext = e11 * d0x - e10 * d0y - e01 * d1x + e00 * d1y;
-    // MIPS from previous: tr(E Q E^T) / (4a), with E's rows (e00, e01) and (e10, e11).
-    const double q00 = q00_[k], q01 = q01_[k], q11 = q11_[k];
-    const double r00 = q00 * e00 + q01 * e01, r01 = q01 * e00 + q11 * e01;  // (E Q) row 0
-    const double r10 = q00 * e10 + q01 * e11, r11 = q01 * e10 + q11 * e11;  // (E Q) row 1
-    const double fromPrevious = (e00 * r00 + e01 * r01 + e10 * r10 + e11 * r11) / (4 * a);
-    mips += toNext + fromPrevious;
-    if (wantGradient) {
-      E00[k] = e00;
-      E01[k] = e01;
-      E10[k] = e10;
-      E11[k] = e11;
-      // d squares / dE: columns 2 e0 - 2 (e1 - e0) and 2 e1 + 2 (e1 - e0); d a / dE = cof(E) / 2.
-      const double half = 0.5 * squares;
-      O00[k] = (half * e11 + a * (2 * e00 - 2 * t0)) / 12;
-      O01[k] = (-half * e10 + a * (2 * e01 + 2 * t0)) / 12;
-      O10[k] = (-half * e01 + a * (2 * e10 - 2 * t1)) / 12;
-      O11[k] = (half * e00 + a * (2 * e11 + 2 * t1)) / 12;
-      // toNext: d/d adj(E) = 2 S adj(E), taken back through adj's entry map. fromPrevious:
-      // 2 E Q / (4a) - fromPrevious / a * cof(E) / 2.
-      const double over = 1 / (2 * a), shrink = fromPrevious * over;
-      M00[k] = 2 * d1y + r00 * over - shrink * e11;
-      M01[k] = -2 * d1x + r01 * over + shrink * e10;
-      M10[k] = -2 * d0y + r10 * over + shrink * e01;
-      M11[k] = 2 * d0x + r11 * over - shrink * e00;
+    for (int k = begin; k < end; ++k) {
+      const double e00 = px[c1[k]] - px[c0[k]], e01 = px[c2[k]] - px[c0[k]];
+      const double e10 = py[c1[k]] - py[c0[k]], e11 = py[c2[k]] - py[c0[k]];
+      const double a = 0.5 * (e00 * e11 - e01 * e10);
+      smallest = std::min(smallest, a);
+      // ODT (eq. 4): a / 12 times the squared edge lengths, the third edge e1 - e0 = (t0, t1).
+      const double t0 = e01 - e00, t1 = e11 - e10;
+      const double squares = e00 * e00 + e10 * e10 + e01 * e01 + e11 * e11 + t0 * t0 + t1 * t1;
+      odt += a * squares / 12;
+      area += a;
+      // MIPS towards next: adj(E) has columns (e11, -e10) and (-e01, e00).
+      const double s00 = s00_[k], s01 = s01_[k], s11 = s11_[k];
+      const double d0x = s00 * e11 - s01 * e10, d0y = s01 * e11 - s11 * e10;  // S adj(E) e_0
+      const double d1x = -s00 * e01 + s01 * e00, d1y = -s01 * e01 + s11 * e00;  // S adj(E) e_1
+      const double toNext = e11 * d0x - e10 * d0y - e01 * d1x + e00 * d1y;
+      // MIPS from previous: tr(E Q E^T) / (4a), with E's rows (e00, e01) and (e10, e11).
+      const double q00 = q00_[k], q01 = q01_[k], q11 = q11_[k];
+      const double r00 = q00 * e00 + q01 * e01, r01 = q01 * e00 + q11 * e01;  // (E Q) row 0
+      const double r10 = q00 * e10 + q01 * e11, r11 = q01 * e10 + q11 * e11;  // (E Q) row 1
+      const double fromPrevious = (e00 * r00 + e01 * r01 + e10 * r10 + e11 * r11) / (4 * a);
+      mips += toNext + fromPrevious;
+      if (wantGradient) {
+        E00[k] = e00;
+        E01[k] = e01;
+        E10[k] = e10;
+        E11[k] = e11;
+        // d squares / dE: columns 2 e0 - 2 (e1 - e0) and 2 e1 + 2 (e1 - e0); d a / dE = cof(E) / 2.
+        const double half = 0.5 * squares;
+        O00[k] = (half * e11 + a * (2 * e00 - 2 * t0)) / 12;
+        O01[k] = (-half * e10 + a * (2 * e01 + 2 * t0)) / 12;
+        O10[k] = (-half * e01 + a * (2 * e10 - 2 * t1)) / 12;
+        O11[k] = (half * e00 + a * (2 * e11 + 2 * t1)) / 12;
+        // toNext: d/d adj(E) = 2 S adj(E), taken back through adj's entry map. fromPrevious:
+        // 2 E Q / (4a) - fromPrevious / a * cof(E) / 2.
+        const double over = 1 / (2 * a), shrink = fromPrevious * over;
+        M00[k] = 2 * d1y + r00 * over - shrink * e11;
+        M01[k] = -2 * d1x + r01 * over + shrink * e10;
+        M10[k] = -2 * d0y + r10 * over + shrink * e01;
+        M11[k] = 2 * d0x + r11 * over - shrink * e00;
+      }
     }
+    partial[omp_get_thread_num()] = {odt, area, mips, smallest};
+  }
+  double odt = 0, area = 0, mips = 0, smallest = kInfinity;
+  for (const auto& p : partial) {
+    odt += p[0];
+    area += p[1];
+    mips += p[2];
+    smallest = std::min(smallest, p[3]);
   }
   if (!(smallest > 0)) return kInfinity;
   const double energy = odtWeight_ * odt / area + mips;

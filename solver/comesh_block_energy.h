@@ -16,6 +16,7 @@
 #include "multimesh.h"
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <vector>
 
 namespace ib {
@@ -28,12 +29,18 @@ class BlockEnergy {
   void prepare(const std::vector<Triangle>& triangles, const std::vector<Eigen::MatrixX2d>& keys, int i,
                double odtWeight);
 
+  // Threads for evaluate() on blocks of at least kParallelTriangles triangles (fewer run on one:
+  // waking a thread costs more than its share). Default 1.
+  void setThreads(int threads) { threads_ = std::max(1, threads); }
+  static constexpr int kParallelTriangles = 8192;
+
   // The block energy at key i's positions x (n x 2), px^2; +infinity when a triangle is not
   // positive in x or in a neighbouring key. Writes d/dx into `gradient` (n x 2) when given.
   double evaluate(const Eigen::MatrixX2d& x, Eigen::MatrixX2d* gradient) const;
 
  private:
   int count_ = 0;                          // triangles kept
+  int threads_ = 1;
   bool hasNext_ = false, hasPrevious_ = false;
   bool neighbourInverted_ = false;         // a triangle not positive in a neighbouring key
   double odtWeight_ = 1;

@@ -17,7 +17,7 @@ void SobolevPreconditioner::update(const ComeshMesh& mesh) {
   for (int v = 0; v < n; ++v)
     if (!mesh.onBoundary(v) && !mesh.fixed[v] && !mesh.around[v].empty()) unknown_[v] = count++;
   std::vector<Eigen::Triplet<double>> entries;
-  for (int v = 0; v < count; ++v) entries.emplace_back(v, v, 1.0);
+  for (int v = 0; v < count; ++v) entries.emplace_back(v, v, shift);
   for (const Triangle& t : mesh.triangles)
     for (int i = 0; i < 3; ++i) {
       const int a = t[i], b = t[(i + 1) % 3];
@@ -34,7 +34,7 @@ void SobolevPreconditioner::update(const ComeshMesh& mesh) {
   Eigen::SparseMatrix<double> matrix(count, count);
   matrix.setFromTriplets(entries.begin(), entries.end());
   unknowns_ = count;
-  factor_ = CholeskyPreconditioner(1);
+  factor_ = CholeskyPreconditioner(threads_);
   if (count > 0) factor_.factorize(matrix);
 }
 

@@ -1,7 +1,8 @@
 // A Sobolev preconditioner for Comesh Optimization's gradient steps: descent directions
-// d = -(L + I)^-1 g on the interior vertices, L the graph Laplacian of the shared topology with the
-// boundary held (Dirichlet). Plain gradient descent on MIPS and ODT moves the mesh's smooth,
-// mesh-wide modes very slowly; through L^-1 they move at the pace of the local ones. L depends on
+// d = -(L + s I)^-1 g on the interior vertices, L the graph Laplacian of the shared topology with
+// the boundary held (Dirichlet), s = `shift`. Plain gradient descent on MIPS and ODT moves the
+// mesh's smooth, mesh-wide modes very slowly; through L^-1 they move at the pace of the local ones
+// (modes of L below s are left as they are, so a smaller s smooths more). L depends on
 // topology only, so it is shared by every key. Any such L is a valid preconditioner, so after
 // flips alone it is kept for a while (refactorized every `refreshAfter` calls); after splits or
 // collapses, which change the vertex set, it is rebuilt at once.
@@ -17,14 +18,19 @@ namespace ib {
 
 class SobolevPreconditioner {
  public:
+  explicit SobolevPreconditioner(int threads) : threads_(threads) {}
+
   // Rebuilds L for `mesh` when its vertex set changed, or its edges changed and L is older than
   // `refreshAfter` calls.
   void update(const ComeshMesh& mesh);
 
   int refreshAfter = 100;  // calls between refactorizations while only flips happen. Default 100.
+  // s above, relative to L's unit edge weights. Measured on bench comesh: 0.3 takes fewer inner
+  // iterations than 1 on every case (17k vertices: 3856 instead of 4604). Default 0.3.
+  double shift = 0.3;
 
-  // direction (n x 2) = -(L + I)^-1 gradient on interior vertices, -gradient / (valence + 1) on
-  // the others (the local scale of the same operator).
+  // direction (n x 2) = -(L + s I)^-1 gradient on interior vertices, -gradient / (valence + 1) on
+  // the others (about the local scale of the same operator).
   void apply(const ComeshMesh& mesh, const Eigen::MatrixX2d& gradient, Eigen::MatrixX2d& direction) const;
 
  private:
@@ -32,7 +38,8 @@ class SobolevPreconditioner {
   int age_ = 0;                                 // update() calls since
   std::vector<int> unknown_;  // [vertex]: row in L, or -1 (boundary, fixed, or without triangles)
   std::vector<int> valence_;  // [vertex]
-  CholeskyPreconditioner factor_{1};  // of L + I; analysed anew with every rebuild (the pattern changes)
+  int threads_;                       // for the solves
+  CholeskyPreconditioner factor_{1};  // of L + s I; analysed anew with every rebuild (the pattern changes)
   int unknowns_ = 0;                  // rows of L
 };
 

@@ -128,12 +128,17 @@ double Remesher::chordDeviation(int k, int a, int b) const {
 }
 
 Remesher::WorstAngle Remesher::keyWorstAngle(const Triangle& tri, int k) const {
-  const auto& x = mesh_.keys[k];
+  const double* x = mesh_.keys[k].col(0).data();
+  const double* y = mesh_.keys[k].col(1).data();
   double l[3];
-  for (int i = 0; i < 3; ++i) l[i] = (x.row(tri[(i + 1) % 3]) - x.row(tri[i])).squaredNorm();
+  for (int i = 0; i < 3; ++i) {
+    const double dx = x[tri[(i + 1) % 3]] - x[tri[i]], dy = y[tri[(i + 1) % 3]] - y[tri[i]];
+    l[i] = dx * dx + dy * dy;
+  }
   const int i = (l[0] >= l[1] && l[0] >= l[2]) ? 0 : (l[1] >= l[2] ? 1 : 2);
   const double other = l[(i + 1) % 3], third = l[(i + 2) % 3];
-  return {(other + third - l[i]) / (2 * std::sqrt(other * third)), i};  // law of cosines
+  const double numerator = other + third - l[i];  // law of cosines, times 2 sqrt(other third)
+  return {numerator >= 0 ? 0.0 : numerator / (2 * std::sqrt(other * third)), i};
 }
 
 void Remesher::keyMoved(int k) { keyStale_.at(k) = 1; }
@@ -243,19 +248,19 @@ int Remesher::splitEdges(RemeshCounts& counts) {
   Timer timer(counts.splitSeconds);
   int splits = 0;
   const size_t count = mesh_.triangles.size();
-  for (size_t t = 0; t < count; ++t)
-    for (int i = 0; i < 3; ++i) {
+  for (size_t t = 0; t < count; ++t) {
+    if (mesh_.triangles[t][0] < 0) continue;
+    int candidates = edgeCandidates(mesh_.triangles[t], false);
+    for (int i = 0; i < 3 && candidates; ++i) {
       const Triangle tri = mesh_.triangles[t];
+      if (!(candidates & (1 << i))) continue;
       const int a = tri[i], b = tri[(i + 1) % 3];
-      if (a < 0) continue;
-      bool longEverywhere = true;
-      for (int k = 0; k < mesh_.keyCount() && longEverywhere; ++k) {
-        const double bound = options_.splitLength * unit_[k];
-        longEverywhere = (mesh_.keys[k].row(a) - mesh_.keys[k].row(b)).squaredNorm() > bound * bound;
-      }
-      if (!longEverywhere || (a > b && mesh_.triangleWith(b, a) >= 0)) continue;  // inside edges once
-      if (trySplit(a, b)) ++splits;
+      if (a > b && mesh_.triangleWith(b, a) >= 0) continue;  // inside edges once
+      if (!trySplit(a, b)) continue;
+      ++splits;  // triangle t changed: its remaining edges as they are now
+      candidates = edgeCandidates(mesh_.triangles[t], false);
     }
+  }
   counts.splits += splits;
   return splits;
 }
@@ -315,36 +320,51 @@ bool Remesher::trySplit(int a, int b) {
   return true;
 }
 
-bool Remesher::collapseCandidate(int a, int b, int c) const {
-  // Squared lengths against squared bounds, and the angle at c by the sign and square of its cosine:
-  // no square roots (this runs on every edge in every pass).
-  bool shortEverywhere = true, thinEverywhere = true;
+int Remesher::edgeCandidates(const Triangle& tri, bool collapse) const {
+  // Per key, the three edge vectors e_i = p_(i+1) - p_i once, their squared lengths against
+  // squared bounds, and the angle facing edge i by the sign and square of its cosine: no square
+  // roots (this runs on every triangle in every pass).
   const double cosine2 = cosCollapse_ * cosCollapse_;
-  for (int k = 0; k < mesh_.keyCount() && (shortEverywhere || thinEverywhere); ++k) {
+  int shortMask = 7, thinMask = collapse ? 7 : 0, longMask = 7;
+  for (int k = 0; k < mesh_.keyCount() && (shortMask | thinMask | longMask); ++k) {
     const double* x = mesh_.keys[k].col(0).data();
     const double* y = mesh_.keys[k].col(1).data();
-    const double ax = x[a] - x[c], ay = y[a] - y[c], bx = x[b] - x[c], by = y[b] - y[c];
-    const double ex = x[a] - x[b], ey = y[a] - y[b];
-    const double bound = options_.collapseLength * unit_[k];
-    shortEverywhere = shortEverywhere && ex * ex + ey * ey < bound * bound;
-    const double dot = ax * bx + ay * by, limit2 = cosine2 * (ax * ax + ay * ay) * (bx * bx + by * by);
-    // dot / |a - c| |b - c| > cosCollapse_, squared on the side of cosCollapse_'s sign
-    const bool thin = cosCollapse_ >= 0 ? (dot > 0 && dot * dot > limit2) : (dot >= 0 || dot * dot < limit2);
-    thinEverywhere = thinEverywhere && thin;
+    double ex[3], ey[3], l[3];
+    for (int i = 0; i < 3; ++i) {
+      ex[i] = x[tri[(i + 1) % 3]] - x[tri[i]];
+      ey[i] = y[tri[(i + 1) % 3]] - y[tri[i]];
+      l[i] = ex[i] * ex[i] + ey[i] * ey[i];
+    }
+    const double shortBound = options_.collapseLength * unit_[k], longBound = options_.splitLength * unit_[k];
+    for (int i = 0; i < 3; ++i) {
+      if (!(l[i] < shortBound * shortBound)) shortMask &= ~(1 << i);
+      if (!(l[i] > longBound * longBound)) longMask &= ~(1 << i);
+      if (!(thinMask & (1 << i))) continue;
+      // The angle at p_(i+2) between e_(i+2) = p_i - p_(i+2) and -e_(i+1) = p_(i+1) - p_(i+2).
+      const int j = (i + 1) % 3, m = (i + 2) % 3;
+      const double dot = -(ex[m] * ex[j] + ey[m] * ey[j]), limit2 = cosine2 * l[m] * l[j];
+      // dot / (|e_m| |e_j|) > cosCollapse_, squared on the side of cosCollapse_'s sign
+      const bool thin = cosCollapse_ >= 0 ? (dot > 0 && dot * dot > limit2) : (dot >= 0 || dot * dot < limit2);
+      if (!thin) thinMask &= ~(1 << i);
+    }
   }
-  return shortEverywhere || thinEverywhere;
+  return collapse ? (shortMask | thinMask) : longMask;
 }
 
 int Remesher::collapseEdges(RemeshCounts& counts) {
   Timer timer(counts.collapseSeconds);
   int collapses = 0;
-  for (size_t t = 0; t < mesh_.triangles.size(); ++t)
-    for (int i = 0; i < 3; ++i) {
+  for (size_t t = 0; t < mesh_.triangles.size(); ++t) {
+    if (mesh_.triangles[t][0] < 0) continue;
+    int candidates = edgeCandidates(mesh_.triangles[t], true);
+    for (int i = 0; i < 3 && candidates; ++i) {
       const Triangle tri = mesh_.triangles[t];
-      const int a = tri[i], b = tri[(i + 1) % 3];
-      if (a < 0 || !collapseCandidate(a, b, tri[(i + 2) % 3])) continue;
-      if (tryCollapse(a, b) || tryCollapse(b, a)) ++collapses;
+      if (!(candidates & (1 << i))) continue;
+      if (!tryCollapse(tri[i], tri[(i + 1) % 3]) && !tryCollapse(tri[(i + 1) % 3], tri[i])) continue;
+      ++collapses;  // triangle t changed or went away: its remaining edges as they are now
+      candidates = mesh_.triangles[t][0] < 0 ? 0 : edgeCandidates(mesh_.triangles[t], true);
     }
+  }
   if (collapses > 0) mesh_.compact();
   counts.collapses += collapses;
   return collapses;

@@ -52,7 +52,8 @@ class Remesher {
   int collapseEdges(RemeshCounts& counts);
 
  private:
-  // The largest angle of a triangle over all keys: its cosine, and the edge facing it (i: tri[i] -> tri[i+1]).
+  // The largest angle of a triangle over all keys: its cosine, or 0 when it is not obtuse (no flip
+  // can help then, and its size does not matter), and the edge facing it (i: tri[i] -> tri[i+1]).
   struct WorstAngle {
     double cosine = 1;
     int edge = 0;
@@ -73,8 +74,9 @@ class Remesher {
   bool trySplit(int a, int b);
   bool tryCollapse(int from, int to);
   bool collapsible(int from, int to) const;
-  // Edge (a, b) of a triangle with third corner c: too short, or the angle at c too small, in every key.
-  bool collapseCandidate(int a, int b, int c) const;
+  // Bit i set: edge i of tri (tri[i] -> tri[i+1]) is, with `collapse`, too short in every key or
+  // faces an angle too small in every key; without, too long in every key.
+  int edgeCandidates(const Triangle& tri, bool collapse) const;
   double relativeLength(int k, int a, int b) const;
   // Where a new vertex at the middle of boundary edge (a, b) goes in every key (a before b on the walk).
   std::vector<Eigen::Vector2d> boundaryMidpoint(int a, int b, Eigen::RowVectorXd& u) const;
