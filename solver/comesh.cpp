@@ -29,10 +29,9 @@ class VertexStepper {
   // Returns the relative energy decrease (0 when no step lowered the energy). `stepSize` carries
   // over between calls: it grows after a success and shrinks while a step fails.
   double step(double& stepSize) {
-    if (mesh_.topologyVersion != preparedVersion_) {  // the other keys only change with the topology
-      energy_.prepare(mesh_.triangles, mesh_.keys, key_, odtWeight_);
-      preparedVersion_ = mesh_.topologyVersion;
-    }
+    if (preparedVersion_ < 0) energy_.prepare(mesh_.triangles, mesh_.keys, key_, odtWeight_);
+    else if (mesh_.topologyVersion != preparedVersion_) energy_.update(mesh_.triangles, mesh_.keys);
+    preparedVersion_ = mesh_.topologyVersion;  // the other keys hold still while this stepper lives
     Eigen::MatrixX2d gradient;
     const double before = energy_.evaluate(mesh_.keys[key_], &gradient);
     const int n = mesh_.vertexCount();

@@ -9,36 +9,54 @@
 
 namespace ib {
 
+void BlockEnergy::prepareTriangle(int k, const Triangle& tri, const std::vector<Eigen::MatrixX2d>& keys) {
+  const int m = static_cast<int>(keys.size());
+  for (int c = 0; c < 3; ++c) corner_[c][k] = tri[c];
+  Eigen::Matrix2d S = Eigen::Matrix2d::Zero(), Q = Eigen::Matrix2d::Zero();
+  inverted_[k] = 0;
+  if (m >= 2) {
+    // With two keys, next and previous are the same key: both directions of its map.
+    const Eigen::Matrix2d next = edgeMatrix(keys[(key_ + 1) % m], tri);
+    const double nextArea = 0.5 * next.determinant();
+    if (nextArea > 0) S = next.transpose() * next / (4 * nextArea);
+    else inverted_[k] = 1;
+    const Eigen::Matrix2d previous = edgeMatrix(keys[(key_ + m - 1) % m], tri);
+    Eigen::Matrix2d adj;
+    adj << previous(1, 1), -previous(0, 1), -previous(1, 0), previous(0, 0);
+    Q = adj * adj.transpose();
+  }
+  s00_[k] = S(0, 0);
+  s01_[k] = S(0, 1);
+  s11_[k] = S(1, 1);
+  q00_[k] = Q(0, 0);
+  q01_[k] = Q(0, 1);
+  q11_[k] = Q(1, 1);
+}
+
 void BlockEnergy::prepare(const std::vector<Triangle>& triangles, const std::vector<Eigen::MatrixX2d>& keys, int i,
                           double odtWeight) {
-  const int m = static_cast<int>(keys.size());
+  key_ = i;
   odtWeight_ = odtWeight;
-  neighbourInverted_ = false;
-  for (auto& c : corner_) c.clear();
-  for (auto* v : {&s00_, &s01_, &s11_, &q00_, &q01_, &q11_}) v->clear();
-  for (const Triangle& tri : triangles) {
-    if (tri[0] < 0) continue;
-    for (int c = 0; c < 3; ++c) corner_[c].push_back(tri[c]);
-    Eigen::Matrix2d S = Eigen::Matrix2d::Zero(), Q = Eigen::Matrix2d::Zero();
-    if (m >= 2) {
-      // With two keys, next and previous are the same key: both directions of its map.
-      const Eigen::Matrix2d next = edgeMatrix(keys[(i + 1) % m], tri);
-      const double nextArea = 0.5 * next.determinant();
-      if (nextArea > 0) S = next.transpose() * next / (4 * nextArea);
-      else neighbourInverted_ = true;
-      const Eigen::Matrix2d previous = edgeMatrix(keys[(i + m - 1) % m], tri);
-      Eigen::Matrix2d adj;
-      adj << previous(1, 1), -previous(0, 1), -previous(1, 0), previous(0, 0);
-      Q = adj * adj.transpose();
-    }
-    s00_.push_back(S(0, 0));
-    s01_.push_back(S(0, 1));
-    s11_.push_back(S(1, 1));
-    q00_.push_back(Q(0, 0));
-    q01_.push_back(Q(0, 1));
-    q11_.push_back(Q(1, 1));
+  count_ = 0;
+  for (const Triangle& tri : triangles) count_ += tri[0] >= 0;
+  for (auto& c : corner_) c.resize(count_);
+  for (auto* v : {&s00_, &s01_, &s11_, &q00_, &q01_, &q11_}) v->resize(count_);
+  inverted_.resize(count_);
+  int k = 0;
+  for (const Triangle& tri : triangles)
+    if (tri[0] >= 0) prepareTriangle(k++, tri, keys);
+  neighbourInverted_ = std::find(inverted_.begin(), inverted_.end(), 1) != inverted_.end();
+}
+
+void BlockEnergy::update(const std::vector<Triangle>& triangles, const std::vector<Eigen::MatrixX2d>& keys) {
+  const bool sameList = static_cast<int>(triangles.size()) == count_ &&
+                        std::none_of(triangles.begin(), triangles.end(), [](const Triangle& t) { return t[0] < 0; });
+  if (!sameList) return prepare(triangles, keys, key_, odtWeight_);
+  for (int k = 0; k < count_; ++k) {
+    const Triangle& tri = triangles[k];
+    if (tri[0] != corner_[0][k] || tri[1] != corner_[1][k] || tri[2] != corner_[2][k]) prepareTriangle(k, tri, keys);
   }
-  count_ = static_cast<int>(corner_[0].size());
+  neighbourInverted_ = std::find(inverted_.begin(), inverted_.end(), 1) != inverted_.end();
 }
 
 double BlockEnergy::evaluate(const Eigen::MatrixX2d& x, Eigen::MatrixX2d* gradient) const {

@@ -29,6 +29,10 @@ class BlockEnergy {
   void prepare(const std::vector<Triangle>& triangles, const std::vector<Eigen::MatrixX2d>& keys, int i,
                double odtWeight);
 
+  // After a change of topology while key i's neighbours held still since prepare(): recomputes the
+  // triangles whose corners changed (all of them when triangles were added or removed).
+  void update(const std::vector<Triangle>& triangles, const std::vector<Eigen::MatrixX2d>& keys);
+
   // Threads for evaluate() on blocks of at least kParallelTriangles triangles (fewer run on one:
   // waking a thread costs more than its share). Default 1.
   void setThreads(int threads) { threads_ = std::max(1, threads); }
@@ -39,6 +43,10 @@ class BlockEnergy {
   double evaluate(const Eigen::MatrixX2d& x, Eigen::MatrixX2d* gradient) const;
 
  private:
+  // Sets triangle k's corners, S, Q and inverted flag.
+  void prepareTriangle(int k, const Triangle& tri, const std::vector<Eigen::MatrixX2d>& keys);
+
+  int key_ = 0;                            // i
   int count_ = 0;                          // triangles kept
   int threads_ = 1;
   bool hasNext_ = false, hasPrevious_ = false;
@@ -47,6 +55,7 @@ class BlockEnergy {
   std::vector<int> corner_[3];             // [corner][triangle]: vertex indices
   std::vector<double> s00_, s01_, s11_;    // S per triangle (MIPS towards the next key)
   std::vector<double> q00_, q01_, q11_;    // Q per triangle (MIPS from the previous key)
+  std::vector<char> inverted_;             // per triangle: not positive in the next key
   mutable std::vector<double> scratch_;    // 12 x count_: edge matrices and gradient blocks
 };
 

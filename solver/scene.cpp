@@ -215,6 +215,12 @@ InterpolationParams interpolationParams(const SceneSolverParams& solver) {
   return p;
 }
 
-Scene loadScene(const std::string& path) { return parseScene(readFile(path), path); }
+Scene loadScene(const std::string& path) {
+  std::error_code error;
+  const std::filesystem::path inside = std::filesystem::path(path) / "scene.json";
+  if (std::filesystem::is_directory(path, error) && std::filesystem::exists(inside, error))
+    throw InputError(path + ": is a folder; the scene is its file " + inside.string());
+  return parseScene(readFile(path), path);
+}
 
 }  // namespace ib

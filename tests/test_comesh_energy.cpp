@@ -95,6 +95,45 @@ TEST_CASE("comesh energy: eq. 8 minus key i's block energy does not depend on X_
   }
 }
 
+TEST_CASE("comesh energy: after edge flips, updating the block energy gives what preparing it afresh gives") {
+  const GridMesh grid = rectangleGrid(6, 4, 3, 2);
+  const std::vector<Eigen::MatrixX2d> keys = {jittered(grid, 7, 0.05), similarity(jittered(grid, 8, 0.05), 0.3, 1.7, {4, -1}),
+                                              jittered(grid, 9, 0.05) * 0.8};
+  for (int i = 0; i < 3; ++i) {
+    std::vector<Triangle> triangles = grid.triangles;
+    BlockEnergy updated;
+    updated.prepare(triangles, keys, i, 0.6);
+    // Flip the shared edge of every other pair of triangles that form a convex quad in every key.
+    int flips = 0;
+    for (size_t t1 = 0; t1 < triangles.size(); t1 += 4)
+      for (size_t t2 = t1 + 1; t2 < triangles.size() && t2 < t1 + 4; ++t2)
+        for (int e = 0; e < 3; ++e) {
+          const int a = triangles[t1][e], b = triangles[t1][(e + 1) % 3], c = triangles[t1][(e + 2) % 3];
+          for (int f = 0; f < 3; ++f) {
+            if (triangles[t2][f] != b || triangles[t2][(f + 1) % 3] != a) continue;
+            const int d = triangles[t2][(f + 2) % 3];
+            bool convex = true;
+            for (const auto& x : keys)
+              convex = convex && signedArea(x.row(c), x.row(a), x.row(d)) > 0 && signedArea(x.row(d), x.row(b), x.row(c)) > 0;
+            if (!convex) continue;
+            triangles[t1] = {c, a, d};
+            triangles[t2] = {d, b, c};
+            ++flips;
+            e = 3;
+            break;
+          }
+        }
+    REQUIRE(flips >= 3);
+    updated.update(triangles, keys);
+    BlockEnergy fresh;
+    fresh.prepare(triangles, keys, i, 0.6);
+    Eigen::MatrixX2d g1, g2;
+    const double e1 = updated.evaluate(keys[i], &g1), e2 = fresh.evaluate(keys[i], &g2);
+    CHECK(e1 == Approx(e2).epsilon(1e-12));
+    CHECK((g1 - g2).norm() <= 1e-12 * g2.norm());
+  }
+}
+
 TEST_CASE("comesh energy: the prepared block energy is infinite when a triangle is inverted in the key or a neighbour") {
   const GridMesh grid = rectangleGrid(6, 4, 3, 2);
   std::vector<Eigen::MatrixX2d> keys = {jittered(grid, 7, 0.12), jittered(grid, 8, 0.12)};

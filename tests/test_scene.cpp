@@ -143,6 +143,13 @@ TEST_CASE("scene: malformed JSON and a missing scene file are input errors namin
   CHECK_THROWS_WITH(loadScene("no-such-scene.json"), Catch::Contains("no-such-scene.json"));
 }
 
+TEST_CASE("scene: a folder given as the scene is an input error naming the folder and the scene file inside") {
+  const std::string folder = std::string(INBETWEEN_ASSETS) + "/square-hexagon";
+  CHECK_THROWS_AS(loadScene(folder), InputError);
+  CHECK_THROWS_WITH(loadScene(folder), Catch::Contains("is a folder") && Catch::Contains(folder + "/scene.json"));
+  CHECK_THROWS_WITH(loadScene(INBETWEEN_ASSETS), Catch::Contains("is a folder, not a file"));
+}
+
 TEST_CASE("scene: cut features are named after the cut and the kind of its ends") {
   CHECK(cutFeatureNames("s", CutKind::kNotch) == std::vector<std::string>{"s.left", "s.right", "s.tip"});
   CHECK(cutFeatureNames("s", CutKind::kSplit).size() == 4);
