@@ -26,9 +26,10 @@ class VertexStepper {
     energy_.setThreads(threads);
   }
 
-  // Returns the relative energy decrease (0 when no step lowered the energy). `stepSize` carries
-  // over between calls: it grows after a success and shrinks while a step fails.
-  double step(double& stepSize) {
+  // Returns the energy decrease relative to `objective` (eq. 8 when the visit started; the block
+  // energy itself if that is not a positive number), 0 when no step lowered the energy.
+  // `stepSize` carries over between calls: it grows after a success and shrinks while a step fails.
+  double step(double& stepSize, double objective) {
     if (preparedVersion_ < 0) energy_.prepare(mesh_.triangles, mesh_.keys, key_, odtWeight_);
     else if (mesh_.topologyVersion != preparedVersion_) energy_.update(mesh_.triangles, mesh_.keys);
     preparedVersion_ = mesh_.topologyVersion;  // the other keys hold still while this stepper lives
@@ -57,7 +58,7 @@ class VertexStepper {
       const double after = energy_.evaluate(mesh_.keys[key_], nullptr);
       if (after < before) {
         stepSize *= 1.5;
-        return (before - after) / before;
+        return (before - after) / (objective > 0 && std::isfinite(objective) ? objective : before);
       }
       stepSize *= 0.5;
     }
@@ -231,6 +232,11 @@ Multimesh comeshOptimize(const Multimesh& input, const ComeshBoundary* boundary,
     double total = 0;
     for (int i = 0; i < m; ++i) {
       const double unit = remesher.unitLength(i);
+      // The paper leaves sub_res open. It is the decrease of eq. 8 relative to its value when the
+      // visit starts, so that total_res is about the objective's relative decrease per sweep and
+      // outer_tol means the same for any number of keys (relative to key i's part instead, each
+      // key's share shrinks as 1 / m and 16 keys had to converge about 8 times tighter than 2).
+      const double objective = comeshEnergy(mesh.triangles, mesh.keys, odtWeights);
       VertexStepper stepper(mesh, preconditioner, i, odtWeights[i],
                             {options.bounds.collapseLength * unit, options.bounds.splitLength * unit,
                              options.bounds.chordTolerance * unit},
@@ -242,7 +248,7 @@ Multimesh comeshOptimize(const Multimesh& input, const ComeshBoundary* boundary,
           remesher.flipEdges(r.remesh);
           remesher.splitEdges(r.remesh);
         }
-        const double residual = stepper.step(stepSize[i]);
+        const double residual = stepper.step(stepSize[i], objective);
         remesher.keyMoved(i);
         if (options.remesh) remesher.collapseEdges(r.remesh);
         innerResidual = std::max(innerResidual, residual);
