@@ -26,7 +26,7 @@ class VertexStepper {
     energy_.setThreads(threads);
   }
 
-  // Returns the energy decrease relative to `objective` (eq. 8 when the visit started; the block
+  // Returns the energy decrease relative to `objective` (eq. 8 when the sweep started; the block
   // energy itself if that is not a positive number), 0 when no step lowered the energy.
   // `stepSize` carries over between calls: it grows after a success and shrinks while a step fails.
   double step(double& stepSize, double objective) {
@@ -227,16 +227,16 @@ Multimesh comeshOptimize(const Multimesh& input, const ComeshBoundary* boundary,
   r.trianglesIn = input.triangleCount();
   r.cohesiveIn = cohesiveCount(input);
   r.energyIn = comeshEnergy(mesh.triangles, mesh.keys, odtWeights);
+  // The paper leaves sub_res open. It is the decrease of eq. 8 relative to its value when the sweep
+  // over the keys starts, so that total_res is about the objective's relative decrease per sweep
+  // and outer_tol means the same for any number of keys (relative to key i's part instead, each
+  // key's share shrinks as 1 / m and 16 keys had to converge about 8 times tighter than 2).
+  double objective = r.energyIn;
   for (int outer = 0; outer < options.outerIterations; ++outer) {
     r.outerIterations = outer + 1;
     double total = 0;
     for (int i = 0; i < m; ++i) {
       const double unit = remesher.unitLength(i);
-      // The paper leaves sub_res open. It is the decrease of eq. 8 relative to its value when the
-      // visit starts, so that total_res is about the objective's relative decrease per sweep and
-      // outer_tol means the same for any number of keys (relative to key i's part instead, each
-      // key's share shrinks as 1 / m and 16 keys had to converge about 8 times tighter than 2).
-      const double objective = comeshEnergy(mesh.triangles, mesh.keys, odtWeights);
       VertexStepper stepper(mesh, preconditioner, i, odtWeights[i],
                             {options.bounds.collapseLength * unit, options.bounds.splitLength * unit,
                              options.bounds.chordTolerance * unit},
@@ -256,7 +256,8 @@ Multimesh comeshOptimize(const Multimesh& input, const ComeshBoundary* boundary,
       }
       total += innerResidual;
     }
-    if (options.progress) options.progress(outer + 1, comeshEnergy(mesh.triangles, mesh.keys, odtWeights));
+    objective = comeshEnergy(mesh.triangles, mesh.keys, odtWeights);
+    if (options.progress) options.progress(outer + 1, objective);
     if (total < options.outerTolerance) break;
   }
   Multimesh out = mesh.toMultimesh();
