@@ -133,14 +133,16 @@ class VertexStepper {
   }
 
   bool everyTrianglePositive() const {
+    for (const Triangle& c : mesh_.triangles)
+      if (c[0] >= 0 && !positive(c)) return false;
+    return true;
+  }
+
+  // Triangle c has positive area in key_.
+  bool positive(const Triangle& c) const {
     const double* x = mesh_.keys[key_].col(0).data();
     const double* y = mesh_.keys[key_].col(1).data();
-    for (const Triangle& c : mesh_.triangles) {
-      if (c[0] < 0) continue;
-      const double twiceArea = (x[c[1]] - x[c[0]]) * (y[c[2]] - y[c[0]]) - (x[c[2]] - x[c[0]]) * (y[c[1]] - y[c[0]]);
-      if (!(twiceArea > 0)) return false;
-    }
-    return true;
+    return (x[c[1]] - x[c[0]]) * (y[c[2]] - y[c[0]]) - (x[c[2]] - x[c[0]]) * (y[c[1]] - y[c[0]]) > 0;
   }
 
   // A sliding vertex stays between `minimumGap_` and `maximumGap_` from its walk neighbours, so
@@ -172,13 +174,8 @@ class VertexStepper {
   }
 
   bool oneRingPositive(int v) const {
-    const double* x = mesh_.keys[key_].col(0).data();
-    const double* y = mesh_.keys[key_].col(1).data();
-    for (int t : mesh_.around[v]) {
-      const Triangle& c = mesh_.triangles[t];
-      const double twiceArea = (x[c[1]] - x[c[0]]) * (y[c[2]] - y[c[0]]) - (x[c[2]] - x[c[0]]) * (y[c[1]] - y[c[0]]);
-      if (!(twiceArea > 0)) return false;
-    }
+    for (int t : mesh_.around[v])
+      if (!positive(mesh_.triangles[t])) return false;
     return true;
   }
 
