@@ -35,18 +35,25 @@ AngleRange angles(const Eigen::Vector2d& p0, const Eigen::Vector2d& p1, const Ei
 
 bool sameCorners(const Triangle& a, const Triangle& b) { return a[0] == b[0] && a[1] == b[1] && a[2] == b[2]; }
 
-// Cosine of the largest angle of triangle (p0, p1, p2) by the law of cosines, or -1 (180 degrees)
-// when the triangle is not positive.
+// The largest angle of a triangle from its squared edge lengths l[i] (edge i: corner i to i + 1):
+// it faces the longest edge, and its cosine follows from the law of cosines.
+struct LargestAngle {
+  double cosine;
+  int edge;
+};
+LargestAngle largestAngle(const double l[3]) {
+  const int i = (l[0] >= l[1] && l[0] >= l[2]) ? 0 : (l[1] >= l[2] ? 1 : 2);
+  const double other = l[(i + 1) % 3], third = l[(i + 2) % 3];
+  return {(other + third - l[i]) / (2 * std::sqrt(other * third)), i};
+}
+
+// Cosine of the largest angle of triangle (p0, p1, p2), or -1 (180 degrees) when it is not positive.
 double largestAngleCosine(const double* x, const double* y, int p0, int p1, int p2) {
   const double ax = x[p1] - x[p0], ay = y[p1] - y[p0], bx = x[p2] - x[p0], by = y[p2] - y[p0];
   if (!(ax * by - ay * bx > 0)) return -1;
   const double cx = bx - ax, cy = by - ay;
-  const double l0 = ax * ax + ay * ay, l1 = cx * cx + cy * cy, l2 = bx * bx + by * by;  // edges 01, 12, 20
-  // The largest angle faces the longest edge.
-  const double longest = std::max({l0, l1, l2});
-  const double others = l0 + l1 + l2 - longest;
-  const double product = longest == l0 ? l1 * l2 : (longest == l1 ? l0 * l2 : l0 * l1);
-  return (others - longest) / (2 * std::sqrt(product));
+  const double l[3] = {ax * ax + ay * ay, cx * cx + cy * cy, bx * bx + by * by};  // edges 01, 12, 20
+  return largestAngle(l).cosine;
 }
 
 class Timer {
@@ -135,10 +142,8 @@ Remesher::WorstAngle Remesher::keyWorstAngle(const Triangle& tri, int k) const {
     const double dx = x[tri[(i + 1) % 3]] - x[tri[i]], dy = y[tri[(i + 1) % 3]] - y[tri[i]];
     l[i] = dx * dx + dy * dy;
   }
-  const int i = (l[0] >= l[1] && l[0] >= l[2]) ? 0 : (l[1] >= l[2] ? 1 : 2);
-  const double other = l[(i + 1) % 3], third = l[(i + 2) % 3];
-  const double numerator = other + third - l[i];  // law of cosines, times 2 sqrt(other third)
-  return {numerator >= 0 ? 0.0 : numerator / (2 * std::sqrt(other * third)), i};
+  const LargestAngle largest = largestAngle(l);
+  return {std::min(largest.cosine, 0.0), largest.edge};
 }
 
 void Remesher::keyMoved(int k) { keyStale_.at(k) = 1; }
