@@ -70,16 +70,35 @@ ArcLengthLoop::ArcLengthLoop(Polyline points) : points_(std::move(points)) {
   cumulative_.assign(points_.size() + 1, 0.0);
   for (size_t i = 0, n = points_.size(); i < n; ++i)
     cumulative_[i + 1] = cumulative_[i] + (points_[(i + 1) % n] - points_[i]).norm();
+  if (points_.empty() || !(length() > 0)) return;
+  bucket_.resize(points_.size());
+  bucketLength_ = length() / static_cast<double>(bucket_.size());
+  size_t i = 0;
+  for (size_t b = 0; b < bucket_.size(); ++b) {
+    const double s = static_cast<double>(b) * bucketLength_;
+    while (i + 1 < points_.size() && cumulative_[i + 1] <= s) ++i;
+    bucket_[b] = static_cast<int>(i);
+  }
+}
+
+size_t ArcLengthLoop::segmentAt(double s) const {
+  const size_t last = points_.size() - 1;
+  const double b = std::floor(s / bucketLength_);
+  size_t i = !(b > 0) ? 0 : static_cast<size_t>(bucket_[std::min<size_t>(static_cast<size_t>(b), bucket_.size() - 1)]);
+  while (i > 0 && cumulative_[i] > s) --i;  // rounding in s / bucketLength_ can overshoot
+  while (i < last && cumulative_[i + 1] <= s) ++i;
+  return i;
 }
 
 Eigen::Vector2d ArcLengthLoop::at(double s) const {
   const double total = length();
   if (points_.empty()) return Eigen::Vector2d::Zero();
   if (!(total > 0)) return points_[0];
-  s = std::fmod(s, total);
-  if (s < 0) s += total;
-  const size_t i = std::min<size_t>(std::upper_bound(cumulative_.begin(), cumulative_.end(), s) - cumulative_.begin() - 1,
-                                    points_.size() - 1);
+  if (!(s >= 0 && s < total)) {
+    s = std::fmod(s, total);
+    if (s < 0) s += total;
+  }
+  const size_t i = segmentAt(s);
   const double span = cumulative_[i + 1] - cumulative_[i];
   const double t = span > 0 ? (s - cumulative_[i]) / span : 0.0;
   return (1 - t) * points_[i] + t * points_[(i + 1) % points_.size()];
@@ -90,7 +109,10 @@ double ArcLengthLoop::chordDeviation(double s0, double s1) const {
   if (points_.size() < 2 || !(total > 0) || !(s1 > s0)) return 0;
   const Eigen::Vector2d a = at(s0), b = at(s1);
   double base = std::floor(s0 / total) * total;  // start of the lap s0 lies in
-  size_t i = std::upper_bound(cumulative_.begin(), cumulative_.end(), s0 - base) - cumulative_.begin();
+  // The first point past s0 - base (an upper bound over cumulative_).
+  const double local = s0 - base;
+  size_t i = local < 0 ? 0 : local >= total ? points_.size() + 1 : segmentAt(local) + 1;
+  while (i < cumulative_.size() && cumulative_[i] <= local) ++i;
   double worst = 0;
   for (;; ++i) {
     if (i >= points_.size()) {  // cumulative_[size] is point 0 of the next lap

@@ -44,8 +44,17 @@ class ArcLengthLoop {
   double chordDeviation(double s0, double s1) const;
 
  private:
+  // The segment holding arc length s in [0, length()]: the largest i < points with
+  // cumulative_[i] <= s (what a binary search over cumulative_ gives), found from its bucket.
+  size_t segmentAt(double s) const;
+
   Polyline points_;
   std::vector<double> cumulative_;  // size points + 1; cumulative_[i] = arc length to point i
+  // Lookup buckets of equal arc length (as many as points): bucket_[b] is segmentAt(b * bucketLength_),
+  // so a lookup starts at most a few segments before its answer instead of bisecting (Comesh
+  // asks for millions of outline points).
+  std::vector<int> bucket_;
+  double bucketLength_ = 0;
 };
 
 }  // namespace ib
