@@ -110,9 +110,13 @@ class VertexStepper {
   void moveVertex(int v, const Eigen::MatrixX2d& start, const Eigen::VectorXd& startU, double stepSize) {
     Eigen::MatrixX2d& x = mesh_.keys[key_];
     const double allowance = slide_[v] != 0 ? outlineAllowance(v) : 0.0;
+    const GapReach gap = slide_[v] != 0 ? gapReach(v, startU[v]) : GapReach{};
     double scale = stepSize;
     for (int halving = 0; halving < 30; ++halving, scale *= 0.5) {
       if (slide_[v] != 0) {
+        // A start that breaks a gap bound by more than the step can move the vertex fails every
+        // smaller step too: the remaining halvings would all end back at the start.
+        if (gap.unrepairable(std::abs(scale * slide_[v]))) break;
         const double u = startU[v] + scale * slide_[v];
         const auto [lo, hi] = slideRange(v);
         if (!(u > lo && u < hi)) continue;
@@ -152,6 +156,30 @@ class VertexStepper {
     const Eigen::MatrixX2d& x = mesh_.keys[key_];
     const double before = (x.row(v) - x.row(mesh_.previous[v])).norm(), after = (x.row(v) - x.row(mesh_.next[v])).norm();
     return before >= minimumGap_ && after >= minimumGap_ && before <= maximumGap_ && after <= maximumGap_;
+  }
+
+  // How far a sliding vertex, at its start, breaks the gap bounds of keepsGap (px; > 0 when it
+  // does), and how far a slide of du can move it at most: the chord is no longer than the arc, plus
+  // however far the start lies off the outline.
+  struct GapReach {
+    double violation = 0;    // px; <= 0 when the start keeps its gaps
+    double arcLength = 0;    // px per unit u
+    double offOutline = 0;   // px
+    // True when no slide of at most du (fraction of the arc) can repair the violation (with slack
+    // for rounding in the outline lookups, px).
+    bool unrepairable(double du) const {
+      return violation > 0 && arcLength > 0 && (du * arcLength + offOutline) * (1 + 1e-9) + 1e-9 < violation;
+    }
+  };
+  GapReach gapReach(int v, double startU) const {
+    const Eigen::MatrixX2d& x = mesh_.keys[key_];
+    const double before = (x.row(v) - x.row(mesh_.previous[v])).norm(), after = (x.row(v) - x.row(mesh_.next[v])).norm();
+    GapReach r;
+    r.violation = std::max({minimumGap_ - before, minimumGap_ - after, before - maximumGap_, after - maximumGap_});
+    if (r.violation <= 0 || !mesh_.arcLength) return r;
+    r.arcLength = mesh_.arcLength(key_, mesh_.arc[v]);
+    r.offOutline = (mesh_.point(key_, mesh_.arc[v], startU).transpose() - x.row(v)).norm();
+    return r;
   }
 
   // How far a sliding vertex's boundary edges may stray from the outline (px): the tolerance, or

@@ -34,6 +34,7 @@ ComeshMesh::ComeshMesh(const Multimesh& mesh, const ComeshBoundary* boundary)
   closedIn = boundary->closedIn;
   point = boundary->point;
   chordDeviation = boundary->chordDeviation;
+  arcLength = boundary->arcLength;
 }
 
 bool ComeshMesh::slides(int v, int k) const {

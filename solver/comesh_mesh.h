@@ -25,6 +25,9 @@ struct ComeshBoundary {
   // How far key `key`'s outline between fractions u0 <= u1 of arc `arc` strays from the straight
   // chord between their points (px): a boundary edge must not cut across the outline's corners.
   std::function<double(int key, int arc, double u0, double u1)> chordDeviation;
+  // Length of arc `arc` in key `key` (px): a vertex moving by du along it moves at most |du| times
+  // this. Optional; without it a vertex step tries every halving.
+  std::function<double(int key, int arc)> arcLength;
 };
 
 struct ComeshMesh {
@@ -73,6 +76,7 @@ struct ComeshMesh {
   std::vector<std::vector<char>> closedIn;    // [arc][key]
   std::function<Eigen::Vector2d(int, int, double)> point;
   std::function<double(int, int, double, double)> chordDeviation;
+  std::function<double(int, int)> arcLength;
   std::vector<std::vector<CohesivePair>> cohesive;  // [key]: C_i
   std::vector<std::vector<char>> outline;           // [key][vertex]: in B_i
   std::vector<char> fixed;                    // [vertex]: never moves (all boundary vertices without `boundary`)

@@ -124,6 +124,7 @@ ComeshBoundary comeshBoundary(const SharedBoundary& boundary, const ReferenceMes
   out.chordDeviation = [shared](int key, int arc, double u0, double u1) {
     return shared->chordDeviation(key, arc, u0, u1);
   };
+  out.arcLength = [shared](int key, int arc) { return shared->arcLength(key, arc); };
   return out;
 }
 

@@ -70,6 +70,7 @@ ComeshBoundary reorderKeys(const ComeshBoundary& boundary, const std::vector<int
   out.chordDeviation = [boundary, order](int key, int arc, double u0, double u1) {
     return boundary.chordDeviation(order[key], arc, u0, u1);
   };
+  out.arcLength = [boundary, order](int key, int arc) { return boundary.arcLength(order[key], arc); };
   return out;
 }
 
