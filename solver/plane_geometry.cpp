@@ -71,8 +71,9 @@ ArcLengthLoop::ArcLengthLoop(Polyline points) : points_(std::move(points)) {
   for (size_t i = 0, n = points_.size(); i < n; ++i)
     cumulative_[i + 1] = cumulative_[i] + (points_[(i + 1) % n] - points_[i]).norm();
   if (points_.empty() || !(length() > 0)) return;
-  bucket_.resize(points_.size());
+  bucket_.resize(4 * points_.size());
   bucketLength_ = length() / static_cast<double>(bucket_.size());
+  inverseBucketLength_ = 1 / bucketLength_;
   size_t i = 0;
   for (size_t b = 0; b < bucket_.size(); ++b) {
     const double s = static_cast<double>(b) * bucketLength_;
@@ -83,7 +84,7 @@ ArcLengthLoop::ArcLengthLoop(Polyline points) : points_(std::move(points)) {
 
 size_t ArcLengthLoop::segmentAt(double s) const {
   const size_t last = points_.size() - 1;
-  const double b = std::floor(s / bucketLength_);
+  const double b = std::floor(s * inverseBucketLength_);
   size_t i = !(b > 0) ? 0 : static_cast<size_t>(bucket_[std::min<size_t>(static_cast<size_t>(b), bucket_.size() - 1)]);
   while (i > 0 && cumulative_[i] > s) --i;  // rounding in s / bucketLength_ can overshoot
   while (i < last && cumulative_[i + 1] <= s) ++i;
@@ -113,7 +114,7 @@ double ArcLengthLoop::chordDeviation(double s0, double s1) const {
   const double local = s0 - base;
   size_t i = local < 0 ? 0 : local >= total ? points_.size() + 1 : segmentAt(local) + 1;
   while (i < cumulative_.size() && cumulative_[i] <= local) ++i;
-  double worst = 0;
+  double worst = 0;  // squared: the square root of the largest square is the largest distance
   for (;; ++i) {
     if (i >= points_.size()) {  // cumulative_[size] is point 0 of the next lap
       i = 0;
@@ -121,9 +122,9 @@ double ArcLengthLoop::chordDeviation(double s0, double s1) const {
     }
     if (base + cumulative_[i] >= s1) break;
     const Eigen::Vector2d& p = points_[i];
-    worst = std::max(worst, (a + closestParameter(a, b, p) * (b - a) - p).norm());
+    worst = std::max(worst, (a + closestParameter(a, b, p) * (b - a) - p).squaredNorm());
   }
-  return worst;
+  return std::sqrt(worst);
 }
 
 }  // namespace ib

@@ -50,11 +50,11 @@ class ArcLengthLoop {
 
   Polyline points_;
   std::vector<double> cumulative_;  // size points + 1; cumulative_[i] = arc length to point i
-  // Lookup buckets of equal arc length (as many as points): bucket_[b] is segmentAt(b * bucketLength_),
+  // Lookup buckets of equal arc length (four per point: outlines crowd their points at curves): bucket_[b] is segmentAt(b * bucketLength_),
   // so a lookup starts at most a few segments before its answer instead of bisecting (Comesh
   // asks for millions of outline points).
   std::vector<int> bucket_;
-  double bucketLength_ = 0;
+  double bucketLength_ = 0, inverseBucketLength_ = 0;
 };
 
 }  // namespace ib
