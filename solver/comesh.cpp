@@ -109,7 +109,7 @@ class VertexStepper {
   // Vertex v from its start, `stepSize` along its direction, halved until it fits, else back at its start.
   void moveVertex(int v, const Eigen::MatrixX2d& start, const Eigen::VectorXd& startU, double stepSize) {
     Eigen::MatrixX2d& x = mesh_.keys[key_];
-    const double allowance = slide_[v] != 0 ? outlineAllowance(v) : 0.0;
+    double allowance = -1;  // of the start; found when a halving first keeps its gaps (most that fail never do)
     const GapReach gap = slide_[v] != 0 ? gapReach(v, startU[v]) : GapReach{};
     double scale = stepSize;
     for (int halving = 0; halving < 30; ++halving, scale *= 0.5) {
@@ -122,7 +122,9 @@ class VertexStepper {
         if (!(u > lo && u < hi)) continue;
         x.row(v) = mesh_.point(key_, mesh_.arc[v], u).transpose();
         mesh_.u(v, key_) = u;
-        if (!keepsGap(v) || !followsOutline(v, allowance)) {
+        const bool gapsKept = keepsGap(v);
+        if (gapsKept && allowance < 0) allowance = outlineAllowance(v, startU[v]);
+        if (!gapsKept || !followsOutline(v, allowance)) {
           x.row(v) = start.row(v);
           mesh_.u(v, key_) = startU[v];
           continue;
@@ -183,12 +185,11 @@ class VertexStepper {
   }
 
   // How far a sliding vertex's boundary edges may stray from the outline (px): the tolerance, or
-  // as far as they already do at its current place.
-  double outlineAllowance(int v) const {
+  // as far as they already do with the vertex at fraction u of its arc (its start).
+  double outlineAllowance(int v, double u) const {
     if (!mesh_.chordDeviation) return 0;
     const auto [lo, hi] = slideRange(v);
     const int arc = mesh_.arc[v];
-    const double u = mesh_.u(v, key_);
     return std::max({chordTolerance_, mesh_.chordDeviation(key_, arc, lo, u), mesh_.chordDeviation(key_, arc, u, hi)});
   }
 
