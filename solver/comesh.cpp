@@ -154,10 +154,13 @@ class VertexStepper {
   // A sliding vertex stays between `minimumGap_` and `maximumGap_` from its walk neighbours, so
   // that the boundary does not bunch up where the maps would like it infinitely dense (at corners
   // that map to straight outline the conformal optimum has no lower bound on spacing) nor thin out.
-  bool keepsGap(int v) const {
+  bool keepsGap(int v) const { return gapViolation(v) <= 0; }
+
+  // How far vertex v breaks those bounds at its current place (px; <= 0 when it keeps them).
+  double gapViolation(int v) const {
     const Eigen::MatrixX2d& x = mesh_.keys[key_];
     const double before = (x.row(v) - x.row(mesh_.previous[v])).norm(), after = (x.row(v) - x.row(mesh_.next[v])).norm();
-    return before >= minimumGap_ && after >= minimumGap_ && before <= maximumGap_ && after <= maximumGap_;
+    return std::max({minimumGap_ - before, minimumGap_ - after, before - maximumGap_, after - maximumGap_});
   }
 
   // How far a sliding vertex, at its start, breaks the gap bounds of keepsGap (px; > 0 when it
@@ -174,13 +177,11 @@ class VertexStepper {
     }
   };
   GapReach gapReach(int v, double startU) const {
-    const Eigen::MatrixX2d& x = mesh_.keys[key_];
-    const double before = (x.row(v) - x.row(mesh_.previous[v])).norm(), after = (x.row(v) - x.row(mesh_.next[v])).norm();
     GapReach r;
-    r.violation = std::max({minimumGap_ - before, minimumGap_ - after, before - maximumGap_, after - maximumGap_});
+    r.violation = gapViolation(v);
     if (r.violation <= 0 || !mesh_.arcLength) return r;
     r.arcLength = mesh_.arcLength(key_, mesh_.arc[v]);
-    r.offOutline = (mesh_.point(key_, mesh_.arc[v], startU).transpose() - x.row(v)).norm();
+    r.offOutline = (mesh_.point(key_, mesh_.arc[v], startU).transpose() - mesh_.keys[key_].row(v)).norm();
     return r;
   }
 

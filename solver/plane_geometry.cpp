@@ -86,7 +86,7 @@ size_t ArcLengthLoop::segmentAt(double s) const {
   const size_t last = points_.size() - 1;
   const double b = std::floor(s * inverseBucketLength_);
   size_t i = !(b > 0) ? 0 : static_cast<size_t>(bucket_[std::min<size_t>(static_cast<size_t>(b), bucket_.size() - 1)]);
-  while (i > 0 && cumulative_[i] > s) --i;  // rounding in s / bucketLength_ can overshoot
+  while (i > 0 && cumulative_[i] > s) --i;  // rounding in s * inverseBucketLength_ can overshoot
   while (i < last && cumulative_[i + 1] <= s) ++i;
   return i;
 }
