@@ -16,6 +16,8 @@ namespace {
 // One projected gradient step on key i (paper: gradient_descent_step), with per-vertex bisection.
 class VertexStepper {
  public:
+  // Halvings of the step a vertex tries before it stays where it is.
+  static constexpr int kHalvings = 30;
   struct Bounds {
     double minimumGap, maximumGap, chordTolerance;  // px
   };
@@ -108,34 +110,51 @@ class VertexStepper {
 
   // Vertex v from its start, `stepSize` along its direction, halved until it fits, else back at its start.
   void moveVertex(int v, const Eigen::MatrixX2d& start, const Eigen::VectorXd& startU, double stepSize) {
+    if (slide_[v] != 0) return slideVertex(v, start, startU, stepSize);
     Eigen::MatrixX2d& x = mesh_.keys[key_];
-    double allowance = -1;  // of the start; found when a halving first keeps its gaps (most that fail never do)
-    const GapReach gap = slide_[v] != 0 ? gapReach(v, startU[v]) : GapReach{};
     double scale = stepSize;
-    for (int halving = 0; halving < 30; ++halving, scale *= 0.5) {
-      if (slide_[v] != 0) {
-        // A start that breaks a gap bound by more than the step can move the vertex fails every
-        // smaller step too: the remaining halvings would all end back at the start.
-        if (gap.unrepairable(std::abs(scale * slide_[v]))) break;
-        const double u = startU[v] + scale * slide_[v];
-        const auto [lo, hi] = slideRange(v);
-        if (!(u > lo && u < hi)) continue;
-        x.row(v) = mesh_.point(key_, mesh_.arc[v], u).transpose();
-        mesh_.u(v, key_) = u;
-        const bool gapsKept = keepsGap(v);
-        if (gapsKept && allowance < 0) allowance = outlineAllowance(v, startU[v]);
-        if (!gapsKept || !followsOutline(v, allowance)) {
-          x.row(v) = start.row(v);
-          mesh_.u(v, key_) = startU[v];
-          continue;
-        }
-      } else {
-        x.row(v) = start.row(v) + scale * direction_.row(v);
-      }
+    for (int halving = 0; halving < kHalvings; ++halving, scale *= 0.5) {
+      x.row(v) = start.row(v) + scale * direction_.row(v);
       if (oneRingPositive(v)) return;
-      x.row(v) = start.row(v);
-      mesh_.u(v, key_) = startU[v];
     }
+    x.row(v) = start.row(v);
+  }
+
+  // The same for a sliding vertex, which must also stay inside its slide range, keep its gaps and
+  // follow the outline. Whether a halving fits is close to monotone in the halving count (a smaller
+  // slide leaves the vertex nearer its start, which fits), and a third of the vertices fit at no
+  // halving but the full slide, while a vertex pressed against a bound fits at none. So the full
+  // slide is tried, then the smallest, then the first fitting one is found by bisection: at most 7
+  // tries instead of 30.
+  void slideVertex(int v, const Eigen::MatrixX2d& start, const Eigen::VectorXd& startU, double stepSize) {
+    // A start that breaks a gap bound by more than a slide can move the vertex fails that slide
+    // and every smaller one: only the halvings before the first such one are worth trying.
+    const GapReach gap = gapReach(v, startU[v]);
+    int tries = 0;
+    while (tries < kHalvings && !gap.unrepairable(std::abs(std::ldexp(stepSize, -tries) * slide_[v]))) ++tries;
+    double allowance = -1;  // of the start; found when a halving first keeps its gaps (most that fail never do)
+    // Places v at halving h; leaves it there if it fits, else back at its start.
+    const auto fits = [&](int h) {
+      const double u = startU[v] + std::ldexp(stepSize, -h) * slide_[v];
+      const auto [lo, hi] = slideRange(v);
+      if (!(u > lo && u < hi)) return false;
+      mesh_.keys[key_].row(v) = mesh_.point(key_, mesh_.arc[v], u).transpose();
+      mesh_.u(v, key_) = u;
+      const bool gapsKept = keepsGap(v);
+      if (gapsKept && allowance < 0) allowance = outlineAllowance(v, startU[v]);
+      if (gapsKept && followsOutline(v, allowance) && oneRingPositive(v)) return true;
+      mesh_.keys[key_].row(v) = start.row(v);
+      mesh_.u(v, key_) = startU[v];
+      return false;
+    };
+    if (tries == 0 || fits(0) || tries == 1 || !fits(tries - 1)) return;
+    int misses = 0, fitting = tries - 1;  // halving `misses` does not fit, `fitting` does
+    while (fitting - misses > 1) {
+      const int middle = (misses + fitting) / 2;
+      if (fits(middle)) fitting = middle;
+      else misses = middle;
+    }
+    fits(fitting);
   }
 
   bool everyTrianglePositive() const {
