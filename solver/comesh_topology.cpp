@@ -33,18 +33,12 @@ AngleRange angles(const Eigen::Vector2d& p0, const Eigen::Vector2d& p1, const Ei
   return range;
 }
 
-bool sameCorners(const Triangle& a, const Triangle& b) { return a[0] == b[0] && a[1] == b[1] && a[2] == b[2]; }
-
-// The largest angle of a triangle from its squared edge lengths l[i] (edge i: corner i to i + 1):
-// it faces the longest edge, and its cosine follows from the law of cosines.
-struct LargestAngle {
-  double cosine;
-  int edge;
-};
-LargestAngle largestAngle(const double l[3]) {
+// Cosine of the largest angle of a triangle from its squared edge lengths l[i]: it faces the
+// longest edge, and its cosine follows from the law of cosines (as in triangle_shapes.cpp).
+double largestAngle(const double l[3]) {
   const int i = (l[0] >= l[1] && l[0] >= l[2]) ? 0 : (l[1] >= l[2] ? 1 : 2);
   const double other = l[(i + 1) % 3], third = l[(i + 2) % 3];
-  return {(other + third - l[i]) / (2 * std::sqrt(other * third)), i};
+  return (other + third - l[i]) / (2 * std::sqrt(other * third));
 }
 
 // Cosine of the largest angle of triangle (p0, p1, p2), or -1 (180 degrees) when it is not positive.
@@ -53,7 +47,7 @@ double largestAngleCosine(const double* x, const double* y, int p0, int p1, int 
   if (!(ax * by - ay * bx > 0)) return -1;
   const double cx = bx - ax, cy = by - ay;
   const double l[3] = {ax * ax + ay * ay, cx * cx + cy * cy, bx * bx + by * by};  // edges 01, 12, 20
-  return largestAngle(l).cosine;
+  return largestAngle(l);
 }
 
 class Timer {
@@ -110,18 +104,36 @@ void splitTriangles(const ComeshMesh& mesh, int a, int b, int v, std::vector<Tri
   }
 }
 
-}  // namespace
-
-Remesher::Remesher(ComeshMesh& mesh, const RemeshOptions& options)
-    : mesh_(mesh), options_(options), cosCollapse_(std::cos(options.collapseAngle * 3.14159265358979323846 / 180)) {
+// Every key's mean edge length (px): the unit of the relative bounds.
+std::vector<double> meanEdgeLengths(const ComeshMesh& mesh) {
+  std::vector<double> unit;
   for (int k = 0; k < mesh.keyCount(); ++k) {
     double sum = 0;
     for (const Triangle& t : mesh.triangles)
       for (int i = 0; i < 3; ++i) sum += (mesh.keys[k].row(t[i]) - mesh.keys[k].row(t[(i + 1) % 3])).norm();
-    unit_.push_back(sum / std::max<size_t>(3 * mesh.triangles.size(), 1));
+    unit.push_back(sum / std::max<size_t>(3 * mesh.triangles.size(), 1));
   }
-  keyStale_.assign(mesh.keyCount(), 1);
+  return unit;
 }
+
+TriangleShapeBounds shapeBounds(const std::vector<double>& unit, const RemeshOptions& options) {
+  TriangleShapeBounds bounds;
+  for (double u : unit) {
+    bounds.shortLength.push_back(options.collapseLength * u);
+    bounds.longLength.push_back(options.splitLength * u);
+  }
+  bounds.thinAngle = options.collapseAngle;
+  return bounds;
+}
+
+}  // namespace
+
+Remesher::Remesher(ComeshMesh& mesh, const RemeshOptions& options)
+    : mesh_(mesh),
+      options_(options),
+      cosCollapse_(std::cos(options.collapseAngle * 3.14159265358979323846 / 180)),
+      unit_(meanEdgeLengths(mesh)),
+      shapes_(mesh, shapeBounds(unit_, options)) {}
 
 double Remesher::relativeLength(int k, int a, int b) const {
   return (mesh_.keys[k].row(a) - mesh_.keys[k].row(b)).norm() / unit_[k];
@@ -134,47 +146,19 @@ double Remesher::chordDeviation(int k, int a, int b) const {
   return mesh_.chordDeviation(k, arc, mesh_.u(a, k), end);
 }
 
-Remesher::WorstAngle Remesher::keyWorstAngle(const Triangle& tri, int k) const {
-  const double* x = mesh_.keys[k].col(0).data();
-  const double* y = mesh_.keys[k].col(1).data();
-  double l[3];
-  for (int i = 0; i < 3; ++i) {
-    const double dx = x[tri[(i + 1) % 3]] - x[tri[i]], dy = y[tri[(i + 1) % 3]] - y[tri[i]];
-    l[i] = dx * dx + dy * dy;
-  }
-  const LargestAngle largest = largestAngle(l);
-  return {std::min(largest.cosine, 0.0), largest.edge};
-}
+void Remesher::keyMoved(int k) { shapes_.keyMoved(k); }
 
-void Remesher::keyMoved(int k) { keyStale_.at(k) = 1; }
-
-void Remesher::refreshAngleCache() {
-  const int m = mesh_.keyCount();
-  const size_t count = mesh_.triangles.size();
-  worst_.resize(count * m);
-  refusedBy_.resize(count, 0);
-  twin_.resize(count, -1);
-  cachedCorners_.resize(count, Triangle{-1, -1, -1});
-  for (int k = 0; k < m; ++k) {
-    if (!keyStale_[k]) continue;
-    for (size_t t = 0; t < count; ++t)
-      if (sameCorners(cachedCorners_[t], mesh_.triangles[t]) && mesh_.triangles[t][0] >= 0)
-        worst_[t * m + k] = keyWorstAngle(mesh_.triangles[t], k);
-    keyStale_[k] = 0;
-  }
+void Remesher::refreshCaches() {
+  shapes_.refresh();
+  refusedBy_.resize(mesh_.triangles.size(), 0);
+  twin_.resize(mesh_.triangles.size(), -1);
 }
 
 Remesher::WorstAngle Remesher::worstAngle(int t) {
-  const int m = mesh_.keyCount();
-  const Triangle& tri = mesh_.triangles[t];
-  WorstAngle* cached = &worst_[static_cast<size_t>(t) * m];
-  if (!sameCorners(cachedCorners_[t], tri)) {
-    for (int k = 0; k < m; ++k) cached[k] = keyWorstAngle(tri, k);
-    cachedCorners_[t] = tri;
-  }
+  shapes_.ensure(t);
   WorstAngle worst;
-  for (int k = 0; k < m; ++k)
-    if (cached[k].cosine < worst.cosine) worst = cached[k];
+  for (int k = 0; k < mesh_.keyCount(); ++k)
+    if (shapes_.largestCosine(t, k) < worst.cosine) worst = {shapes_.largestCosine(t, k), shapes_.largestEdge(t, k)};
   return worst;
 }
 
@@ -208,7 +192,7 @@ int Remesher::twinOf(int t, int a, int b) {
 int Remesher::flipEdges(RemeshCounts& counts) {
   Timer timer(counts.flipSeconds);
   int flips = 0;
-  refreshAngleCache();
+  refreshCaches();
   for (size_t t = 0; t < mesh_.triangles.size(); ++t) {
     // A flip keeps the whole angles at the edge's ends, so it can only lower the largest angle of
     // the pair (over all keys) when that angle faces the edge: the only candidate of a triangle is
@@ -252,10 +236,11 @@ std::vector<Eigen::Vector2d> Remesher::boundaryMidpoint(int a, int b, Eigen::Row
 int Remesher::splitEdges(RemeshCounts& counts) {
   Timer timer(counts.splitSeconds);
   int splits = 0;
+  refreshCaches();
   const size_t count = mesh_.triangles.size();
   for (size_t t = 0; t < count; ++t) {
     if (mesh_.triangles[t][0] < 0) continue;
-    int candidates = edgeCandidates(mesh_.triangles[t], false);
+    int candidates = edgeCandidates(static_cast<int>(t), false);
     for (int i = 0; i < 3 && candidates; ++i) {
       const Triangle tri = mesh_.triangles[t];
       if (!(candidates & (1 << i))) continue;
@@ -263,7 +248,7 @@ int Remesher::splitEdges(RemeshCounts& counts) {
       if (a > b && mesh_.triangleWith(b, a) >= 0) continue;  // inside edges once
       if (!trySplit(a, b)) continue;
       ++splits;  // triangle t changed: its remaining edges as they are now
-      candidates = edgeCandidates(mesh_.triangles[t], false);
+      candidates = edgeCandidates(static_cast<int>(t), false);
     }
   }
   counts.splits += splits;
@@ -325,49 +310,35 @@ bool Remesher::trySplit(int a, int b) {
   return true;
 }
 
-int Remesher::edgeCandidates(const Triangle& tri, bool collapse) const {
-  // Per key, the three edge vectors e_i = p_(i+1) - p_i once, their squared lengths against
-  // squared bounds, and the angle facing edge i by the sign and square of its cosine: no square
-  // roots (this runs on every triangle in every pass).
-  const double cosine2 = cosCollapse_ * cosCollapse_;
-  int shortMask = 7, thinMask = collapse ? 7 : 0, longMask = 7;
-  for (int k = 0; k < mesh_.keyCount() && (shortMask | thinMask | longMask); ++k) {
-    const double* x = mesh_.keys[k].col(0).data();
-    const double* y = mesh_.keys[k].col(1).data();
-    double ex[3], ey[3], l[3];
-    for (int i = 0; i < 3; ++i) {
-      ex[i] = x[tri[(i + 1) % 3]] - x[tri[i]];
-      ey[i] = y[tri[(i + 1) % 3]] - y[tri[i]];
-      l[i] = ex[i] * ex[i] + ey[i] * ey[i];
-    }
-    const double shortBound = options_.collapseLength * unit_[k], longBound = options_.splitLength * unit_[k];
-    for (int i = 0; i < 3; ++i) {
-      if (!(l[i] < shortBound * shortBound)) shortMask &= ~(1 << i);
-      if (!(l[i] > longBound * longBound)) longMask &= ~(1 << i);
-      if (!(thinMask & (1 << i))) continue;
-      // The angle at p_(i+2) between e_(i+2) = p_i - p_(i+2) and -e_(i+1) = p_(i+1) - p_(i+2).
-      const int j = (i + 1) % 3, m = (i + 2) % 3;
-      const double dot = -(ex[m] * ex[j] + ey[m] * ey[j]), limit2 = cosine2 * l[m] * l[j];
-      // dot / (|e_m| |e_j|) > cosCollapse_, squared on the side of cosCollapse_'s sign
-      const bool thin = cosCollapse_ >= 0 ? (dot > 0 && dot * dot > limit2) : (dot >= 0 || dot * dot < limit2);
-      if (!thin) thinMask &= ~(1 << i);
-    }
+int Remesher::edgeCandidates(int t, bool collapse) {
+  shapes_.ensure(t);
+  const int m = mesh_.keyCount();
+  if (!collapse) {
+    int longMask = 7;
+    for (int k = 0; k < m && longMask; ++k) longMask &= shapes_.longEdges(t, k);
+    return longMask;
   }
-  return collapse ? (shortMask | thinMask) : longMask;
+  int shortMask = 7, thinMask = 7;
+  for (int k = 0; k < m && (shortMask | thinMask); ++k) {
+    shortMask &= shapes_.shortEdges(t, k);
+    thinMask &= shapes_.thinEdges(t, k);
+  }
+  return shortMask | thinMask;
 }
 
 int Remesher::collapseEdges(RemeshCounts& counts) {
   Timer timer(counts.collapseSeconds);
   int collapses = 0;
+  refreshCaches();
   for (size_t t = 0; t < mesh_.triangles.size(); ++t) {
     if (mesh_.triangles[t][0] < 0) continue;
-    int candidates = edgeCandidates(mesh_.triangles[t], true);
+    int candidates = edgeCandidates(static_cast<int>(t), true);
     for (int i = 0; i < 3 && candidates; ++i) {
       const Triangle tri = mesh_.triangles[t];
       if (!(candidates & (1 << i))) continue;
       if (!tryCollapse(tri[i], tri[(i + 1) % 3]) && !tryCollapse(tri[(i + 1) % 3], tri[i])) continue;
       ++collapses;  // triangle t changed or went away: its remaining edges as they are now
-      candidates = mesh_.triangles[t][0] < 0 ? 0 : edgeCandidates(mesh_.triangles[t], true);
+      candidates = mesh_.triangles[t][0] < 0 ? 0 : edgeCandidates(static_cast<int>(t), true);
     }
   }
   if (collapses > 0) mesh_.compact();

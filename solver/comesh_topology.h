@@ -5,6 +5,7 @@
 #pragma once
 
 #include "comesh_mesh.h"
+#include "triangle_shapes.h"
 
 namespace ib {
 
@@ -35,8 +36,8 @@ class Remesher {
   // How far boundary edge (a, b), a before b on the walk, strays from key k's outline (px).
   double chordDeviation(int k, int a, int b) const;
 
-  // Key k's positions have moved (a vertex step): the largest angles cached for the flip test are
-  // recomputed in that key before the next flip pass. Topology changes need no call.
+  // Key k's positions have moved (a vertex step): what the passes cache of every triangle is
+  // recomputed in that key before the next pass. Topology changes need no call.
   void keyMoved(int k);
 
   // One pass over the edges each; return how many operations were applied.
@@ -58,12 +59,10 @@ class Remesher {
     double cosine = 1;
     int edge = 0;
   };
-  // Over all keys, for triangle t, from the cache (refreshed for t if its corners changed).
+  // Over all keys, for triangle t.
   WorstAngle worstAngle(int t);
-  // In key k alone.
-  WorstAngle keyWorstAngle(const Triangle& tri, int k) const;
-  // Brings the cache to the current triangle count and recomputes the keys that moved.
-  void refreshAngleCache();
+  // Brings the per-triangle caches to the current triangle count and recomputes the keys that moved.
+  void refreshCaches();
   // Flipping (a, b) of triangles (a, b, c), (b, a, d) leaves every key positive and every new angle
   // smaller than the largest before (given as its cosine). hint: the key to ask first; receives
   // the key that refused.
@@ -74,9 +73,9 @@ class Remesher {
   bool trySplit(int a, int b);
   bool tryCollapse(int from, int to);
   bool collapsible(int from, int to) const;
-  // Bit i set: edge i of tri (tri[i] -> tri[i+1]) is, with `collapse`, too short in every key or
-  // faces an angle too small in every key; without, too long in every key.
-  int edgeCandidates(const Triangle& tri, bool collapse) const;
+  // Bit i set: edge i of triangle t (tri[i] -> tri[i+1]) is, with `collapse`, too short in every
+  // key or faces an angle too small in every key; without, too long in every key.
+  int edgeCandidates(int t, bool collapse);
   double relativeLength(int k, int a, int b) const;
   // Where a new vertex at the middle of boundary edge (a, b) goes in every key (a before b on the walk).
   std::vector<Eigen::Vector2d> boundaryMidpoint(int a, int b, Eigen::RowVectorXd& u) const;
@@ -85,11 +84,9 @@ class Remesher {
   RemeshOptions options_;
   double cosCollapse_;        // cosine of options_.collapseAngle
   std::vector<double> unit_;  // [key]: mean edge length at construction
-  // Largest angle of every triangle in every key, for the flip pass: the flip test needs it over
-  // all keys for every triangle, while a vertex step moves only one key.
-  std::vector<WorstAngle> worst_;        // [triangle * keys + key]
-  std::vector<Triangle> cachedCorners_;  // [triangle]: the corners worst_ was computed for
-  std::vector<char> keyStale_;           // [key]: positions moved since worst_ was computed
+  // Every triangle's largest angle and candidate edges in every key: the flip test needs every
+  // key of every triangle, while a vertex step moves only one key.
+  TriangleShapes shapes_;
   std::vector<int> refusedBy_;           // [triangle]: the key that last refused its flip (a hint)
   std::vector<int> twin_;                // [triangle]: the last twin found by twinOf (a hint), or -1
 };

@@ -1,0 +1,58 @@
+// What Comesh Optimization's remeshing passes ask of every triangle in every key, all from its
+// squared edge lengths: its largest angle and the edge facing it (flips), which edges are too long
+// (splits), and which are too short or face too small an angle (collapses). A vertex step moves
+// one key, so keys are recomputed one at a time, in one pass over all triangles that vectorizes;
+// a triangle whose corners changed (a flip, a split, a collapse) is recomputed in every key when
+// next asked for.
+#pragma once
+
+#include "comesh_mesh.h"
+
+#include <vector>
+
+namespace ib {
+
+// Bounds per key (px): lengths are compared squared, angles by the square of their cosine.
+struct TriangleShapeBounds {
+  std::vector<double> shortLength;  // [key]: shorter edges are collapse candidates
+  std::vector<double> longLength;   // [key]: longer edges are split candidates
+  double thinAngle = 10;            // degrees: an edge facing a smaller angle is a collapse candidate
+};
+
+class TriangleShapes {
+ public:
+  TriangleShapes(const ComeshMesh& mesh, const TriangleShapeBounds& bounds);
+
+  // Key k's positions moved: it is recomputed for every triangle at the next refresh().
+  void keyMoved(int k);
+  // Brings the cache to the mesh's triangle count and recomputes the keys that moved.
+  void refresh();
+  // Recomputes triangle t in every key if its corners changed since it was computed. Every query
+  // below needs it first (after refresh(), for triangles added since).
+  void ensure(int t);
+
+  // Cosine of triangle t's largest angle in key k, or 0 when that angle is not obtuse.
+  double largestCosine(int t, int k) const { return cosine_[k][t]; }
+  // The edge facing that angle (i: corner i -> corner i + 1).
+  int largestEdge(int t, int k) const { return flags_[k][t] & 3; }
+  // Bit i: edge i of triangle t is longer than the key's longLength.
+  int longEdges(int t, int k) const { return (flags_[k][t] >> 2) & 7; }
+  // Bit i: edge i is shorter than the key's shortLength.
+  int shortEdges(int t, int k) const { return (flags_[k][t] >> 5) & 7; }
+  // Bit i: edge i faces an angle smaller than thinAngle.
+  int thinEdges(int t, int k) const { return (flags_[k][t] >> 8) & 7; }
+
+ private:
+  void computeKey(int k, size_t first, size_t end);
+
+  const ComeshMesh& mesh_;
+  std::vector<double> shortSquared_, longSquared_;  // [key]: bounds squared (px^2)
+  double thinCosine_;                               // cosine of thinAngle
+  std::vector<std::vector<double>> cosine_;         // [key][triangle]: see largestCosine
+  std::vector<std::vector<int>> flags_;             // [key][triangle]: bits 0-1 largest edge,
+                                                    // 2-4 long, 5-7 short, 8-10 thin edges
+  std::vector<Triangle> corners_;                   // [triangle]: the corners last computed for
+  std::vector<char> stale_;                         // [key]: positions moved since computed
+};
+
+}  // namespace ib
