@@ -156,10 +156,7 @@ void Remesher::refreshCaches() {
 
 Remesher::WorstAngle Remesher::worstAngle(int t) {
   shapes_.ensure(t);
-  WorstAngle worst;
-  for (int k = 0; k < mesh_.keyCount(); ++k)
-    if (shapes_.largestCosine(t, k) < worst.cosine) worst = {shapes_.largestCosine(t, k), shapes_.largestEdge(t, k)};
-  return worst;
+  return {shapes_.worstCosine(t), shapes_.worstEdge(t)};
 }
 
 bool Remesher::flipImproves(int a, int b, int c, int d, double before, int& hint) const {
@@ -312,18 +309,7 @@ bool Remesher::trySplit(int a, int b) {
 
 int Remesher::edgeCandidates(int t, bool collapse) {
   shapes_.ensure(t);
-  const int m = mesh_.keyCount();
-  if (!collapse) {
-    int longMask = 7;
-    for (int k = 0; k < m && longMask; ++k) longMask &= shapes_.longEdges(t, k);
-    return longMask;
-  }
-  int shortMask = 7, thinMask = 7;
-  for (int k = 0; k < m && (shortMask | thinMask); ++k) {
-    shortMask &= shapes_.shortEdges(t, k);
-    thinMask &= shapes_.thinEdges(t, k);
-  }
-  return shortMask | thinMask;
+  return collapse ? (shapes_.shortInEveryKey(t) | shapes_.thinInEveryKey(t)) : shapes_.longInEveryKey(t);
 }
 
 int Remesher::collapseEdges(RemeshCounts& counts) {

@@ -12,8 +12,6 @@ constexpr double kPi = 3.14159265358979323846;
 // No triangle has these corners: a slot holding them is computed when first asked for.
 constexpr Triangle kUncomputed = {-2, -2, -2};
 
-bool sameCorners(const Triangle& a, const Triangle& b) { return a[0] == b[0] && a[1] == b[1] && a[2] == b[2]; }
-
 // One triangle (p0, p1, p2) in one key: edges e_i = p_(i+1) - p_i, squared lengths l_i. Written
 // with selects instead of branches and indexing so that the loop over triangles vectorizes.
 struct Shape {
@@ -64,6 +62,21 @@ void shapeRange(const double* __restrict x, const double* __restrict y, const in
   }
 }
 
+// The mask bits of the flags (all but the edge), set in every key until a key clears them.
+constexpr int kEveryMask = 0x7fc;
+
+// Folds one key into the combination over keys: the first key with the smallest cosine gives the
+// worst angle and its edge, and the masks are and-ed.
+void combineKey(const double* __restrict cosine, const int* __restrict flags, size_t first, size_t end,
+                double* __restrict worst, int* __restrict combined) {
+  for (size_t t = first; t < end; ++t) {
+    const bool worse = cosine[t] < worst[t];
+    const int edge = worse ? (flags[t] & 3) : (combined[t] & 3);
+    worst[t] = worse ? cosine[t] : worst[t];
+    combined[t] = (combined[t] & flags[t] & kEveryMask) | edge;
+  }
+}
+
 }  // namespace
 
 TriangleShapes::TriangleShapes(const ComeshMesh& mesh, const TriangleShapeBounds& bounds)
@@ -80,31 +93,42 @@ TriangleShapes::TriangleShapes(const ComeshMesh& mesh, const TriangleShapeBounds
 
 void TriangleShapes::keyMoved(int k) { stale_.at(k) = 1; }
 
-void TriangleShapes::refresh() {
-  const size_t count = mesh_.triangles.size();
+void TriangleShapes::resize(size_t count) {
   corners_.resize(count, kUncomputed);
+  worstCosine_.resize(count);
+  combined_.resize(count);
   for (size_t k = 0; k < stale_.size(); ++k) {
     cosine_[k].resize(count);
     flags_[k].resize(count);
+  }
+}
+
+void TriangleShapes::refresh() {
+  const size_t count = mesh_.triangles.size();
+  resize(count);
+  bool moved = false;
+  for (size_t k = 0; k < stale_.size(); ++k) {
     if (!stale_[k]) continue;
     // Every slot, also those whose corners changed: they are recomputed in every key when asked.
     computeKey(static_cast<int>(k), 0, count);
     stale_[k] = 0;
+    moved = true;
   }
+  if (moved) combineKeys(0, count);
 }
 
-void TriangleShapes::ensure(int t) {
-  if (static_cast<size_t>(t) >= corners_.size()) {
-    const size_t count = mesh_.triangles.size();
-    corners_.resize(count, kUncomputed);
-    for (size_t k = 0; k < stale_.size(); ++k) {
-      cosine_[k].resize(count);
-      flags_[k].resize(count);
-    }
-  }
-  if (sameCorners(corners_[t], mesh_.triangles[t])) return;
+void TriangleShapes::recompute(int t) {
+  if (static_cast<size_t>(t) >= corners_.size()) resize(mesh_.triangles.size());
   for (size_t k = 0; k < stale_.size(); ++k) computeKey(static_cast<int>(k), t, t + 1);
+  combineKeys(t, t + 1);
   corners_[t] = mesh_.triangles[t];
+}
+
+void TriangleShapes::combineKeys(size_t first, size_t end) {
+  std::fill(worstCosine_.begin() + first, worstCosine_.begin() + end, 1.0);
+  std::fill(combined_.begin() + first, combined_.begin() + end, kEveryMask);
+  for (size_t k = 0; k < stale_.size(); ++k)
+    combineKey(cosine_[k].data(), flags_[k].data(), first, end, worstCosine_.data(), combined_.data());
 }
 
 void TriangleShapes::computeKey(int k, size_t first, size_t end) {

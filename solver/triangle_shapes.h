@@ -3,7 +3,7 @@
 // (splits), and which are too short or face too small an angle (collapses). A vertex step moves
 // one key, so keys are recomputed one at a time, in one pass over all triangles that vectorizes;
 // a triangle whose corners changed (a flip, a split, a collapse) is recomputed in every key when
-// next asked for.
+// next asked for. The passes ask about all keys at once, so that is kept combined as well.
 #pragma once
 
 #include "comesh_mesh.h"
@@ -29,9 +29,23 @@ class TriangleShapes {
   void refresh();
   // Recomputes triangle t in every key if its corners changed since it was computed. Every query
   // below needs it first (after refresh(), for triangles added since).
-  void ensure(int t);
+  void ensure(int t) {
+    if (static_cast<size_t>(t) >= corners_.size() || corners_[t] != mesh_.triangles[t]) recompute(t);
+  }
 
-  // Cosine of triangle t's largest angle in key k, or 0 when that angle is not obtuse.
+  // Over all keys: the cosine of triangle t's largest angle in the key where it is largest (the
+  // first such key), or 0 when it is not obtuse in any key, or 1 without keys.
+  double worstCosine(int t) const { return worstCosine_[t]; }
+  // The edge facing that angle.
+  int worstEdge(int t) const { return combined_[t] & 3; }
+  // Bit i: edge i is long in every key.
+  int longInEveryKey(int t) const { return (combined_[t] >> 2) & 7; }
+  // Bit i: edge i is short in every key.
+  int shortInEveryKey(int t) const { return (combined_[t] >> 5) & 7; }
+  // Bit i: edge i faces a thin angle in every key.
+  int thinInEveryKey(int t) const { return (combined_[t] >> 8) & 7; }
+
+  // Per key. Cosine of triangle t's largest angle in key k, or 0 when that angle is not obtuse.
   double largestCosine(int t, int k) const { return cosine_[k][t]; }
   // The edge facing that angle (i: corner i -> corner i + 1).
   int largestEdge(int t, int k) const { return flags_[k][t] & 3; }
@@ -43,7 +57,10 @@ class TriangleShapes {
   int thinEdges(int t, int k) const { return (flags_[k][t] >> 8) & 7; }
 
  private:
+  void recompute(int t);
+  void resize(size_t count);
   void computeKey(int k, size_t first, size_t end);
+  void combineKeys(size_t first, size_t end);
 
   const ComeshMesh& mesh_;
   std::vector<double> shortSquared_, longSquared_;  // [key]: bounds squared (px^2)
@@ -51,6 +68,9 @@ class TriangleShapes {
   std::vector<std::vector<double>> cosine_;         // [key][triangle]: see largestCosine
   std::vector<std::vector<int>> flags_;             // [key][triangle]: bits 0-1 largest edge,
                                                     // 2-4 long, 5-7 short, 8-10 thin edges
+  std::vector<double> worstCosine_;                 // [triangle]: see worstCosine
+  std::vector<int> combined_;                       // [triangle]: flags_ over all keys: the
+                                                    // worst key's edge, masks and-ed
   std::vector<Triangle> corners_;                   // [triangle]: the corners last computed for
   std::vector<char> stale_;                         // [key]: positions moved since computed
 };

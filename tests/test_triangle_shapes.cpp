@@ -54,14 +54,39 @@ void checkTriangle(const ComeshMesh& mesh, TriangleShapes& shapes, const Triangl
   CHECK(shapes.thinEdges(t, k) == thinEdges);
 }
 
+// The answers over all keys agree with the per-key ones (checked above against angles and
+// lengths): the first key with the largest angle gives the worst, the masks hold in every key.
+void checkCombined(const ComeshMesh& mesh, TriangleShapes& shapes, int t) {
+  shapes.ensure(t);
+  double worst = 1;
+  int edge = 0, longEdges = 7, shortEdges = 7, thinEdges = 7;
+  for (int k = 0; k < mesh.keyCount(); ++k) {
+    if (shapes.largestCosine(t, k) < worst) {
+      worst = shapes.largestCosine(t, k);
+      edge = shapes.largestEdge(t, k);
+    }
+    longEdges &= shapes.longEdges(t, k);
+    shortEdges &= shapes.shortEdges(t, k);
+    thinEdges &= shapes.thinEdges(t, k);
+  }
+  INFO("triangle " << t);
+  CHECK(shapes.worstCosine(t) == worst);
+  CHECK(shapes.worstEdge(t) == edge);
+  CHECK(shapes.longInEveryKey(t) == longEdges);
+  CHECK(shapes.shortInEveryKey(t) == shortEdges);
+  CHECK(shapes.thinInEveryKey(t) == thinEdges);
+}
+
 void checkAll(const ComeshMesh& mesh, TriangleShapes& shapes, const TriangleShapeBounds& bounds) {
-  for (int t = 0; t < static_cast<int>(mesh.triangles.size()); ++t)
+  for (int t = 0; t < static_cast<int>(mesh.triangles.size()); ++t) {
     for (int k = 0; k < mesh.keyCount(); ++k) checkTriangle(mesh, shapes, bounds, t, k);
+    checkCombined(mesh, shapes, t);
+  }
 }
 
 }  // namespace
 
-TEST_CASE("triangle shapes: largest angle, long, short and thin edges match a direct computation in every key",
+TEST_CASE("triangle shapes: largest angle, long, short and thin edges match a direct computation, per key and over all keys",
           "[comesh]") {
   std::mt19937 random(11);
   ComeshMesh mesh = jitteredGrid(3, random);
@@ -105,6 +130,8 @@ TEST_CASE("triangle shapes: a moved key and changed corners are recomputed, othe
     checkTriangle(mesh, shapes, bounds, 5, k);
     checkTriangle(mesh, shapes, bounds, appended, k);
   }
+  checkCombined(mesh, shapes, 5);
+  checkCombined(mesh, shapes, appended);
   shapes.keyMoved(0);
   shapes.refresh();  // reads the removed slot's corners as vertex 0, harmlessly
   mesh.triangles.erase(mesh.triangles.begin() + 6);
