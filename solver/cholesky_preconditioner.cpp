@@ -134,6 +134,30 @@ void CholeskyPreconditioner::solve(Eigen::MatrixX2d& rhs) const {
     x[2 * perm_[i]] = rhs(i, 0);
     x[2 * perm_[i] + 1] = rhs(i, 1);
   }
+  solveWork();
+  for (int i = 0; i < n_; ++i) {
+    rhs(i, 0) = x[2 * perm_[i]];
+    rhs(i, 1) = x[2 * perm_[i] + 1];
+  }
+}
+
+void CholeskyPreconditioner::step(const Eigen::MatrixX2d& position, const Eigen::MatrixX2d& g,
+                                  Eigen::MatrixX2d& out) const {
+  double* x = work_.data();
+  for (int i = 0; i < n_; ++i) {
+    x[2 * perm_[i]] = g(i, 0);
+    x[2 * perm_[i] + 1] = g(i, 1);
+  }
+  solveWork();
+  out.resize(n_, 2);
+  for (int i = 0; i < n_; ++i) {
+    out(i, 0) = position(i, 0) - x[2 * perm_[i]];
+    out(i, 1) = position(i, 1) - x[2 * perm_[i] + 1];
+  }
+}
+
+void CholeskyPreconditioner::solveWork() const {
+  double* x = work_.data();
   // L y = b, by rows: y_j = (b_j - sum_{k<j} L_jk y_k) / L_jj reads only descendants of j.
   const auto forward = [&](const std::vector<int>& columns) {
     for (int j : columns) {
@@ -159,10 +183,6 @@ void CholeskyPreconditioner::solve(Eigen::MatrixX2d& rhs) const {
   backward(top_);
 #pragma omp parallel for schedule(static, 1) num_threads(parts)
   for (int p = 0; p < parts; ++p) backward(part_[p]);
-  for (int i = 0; i < n_; ++i) {
-    rhs(i, 0) = x[2 * perm_[i]];
-    rhs(i, 1) = x[2 * perm_[i] + 1];
-  }
 }
 
 }  // namespace ib

@@ -29,11 +29,16 @@ class CholeskyPreconditioner {
 
   // rhs (n x 2) <- H^{-1} rhs.
   void solve(Eigen::MatrixX2d& rhs) const;
+  // out = x - H^{-1} g (all n x 2): the global step, without the copies around solve(). out may
+  // not be x or g.
+  void step(const Eigen::MatrixX2d& x, const Eigen::MatrixX2d& g, Eigen::MatrixX2d& out) const;
 
   long factorNonZeros() const { return static_cast<long>(colValue_.size()); }
 
  private:
   void buildSchedule();
+  // work_ <- L^-T L^-1 work_ (the permuted system).
+  void solveWork() const;
 
   struct Analysis;
   std::unique_ptr<Analysis> analysis_;

@@ -161,14 +161,18 @@ void Interpolator::evaluateState(const Frame& frame, State& s) const {
   s.gradient.resize(n, 2);
   // E_P first: it also initializes the gradient.
   const double tie = options_.placementStiffness * vertexWeight_;  // mu m_v
-  // Serial: an OpenMP reduction would add the threads' sums in arrival order, and frames must be
-  // bit-identical from run to run. The loop is a small share of an iteration.
+  // One thread (vectorized): an OpenMP reduction over threads would add their sums in arrival
+  // order, and frames must be bit-identical from run to run.
   double placement = 0;
+  const double *x = s.x.col(0).data(), *y = s.x.col(1).data();
+  const double *bx = frame.blend.col(0).data(), *by = frame.blend.col(1).data();
+  double *gx = s.gradient.col(0).data(), *gy = s.gradient.col(1).data();
+#pragma omp simd reduction(+ : placement)
   for (int v = 0; v < n; ++v) {
-    const double dx = s.x(v, 0) - frame.blend(v, 0), dy = s.x(v, 1) - frame.blend(v, 1);
+    const double dx = x[v] - bx[v], dy = y[v] - by[v];
     placement += dx * dx + dy * dy;
-    s.gradient(v, 0) = tie * dx;
-    s.gradient(v, 1) = tie * dy;
+    gx[v] = tie * dx;
+    gy[v] = tie * dy;
   }
   s.placement = 0.5 * tie * placement;
   s.energy = s.placement;
@@ -294,9 +298,7 @@ Interpolator::Step Interpolator::step(const Frame& frame, const State& s, State&
     return candidate.energy <= s.energy + slack;
   };
   // The plain local-global step G(x) = x - H^{-1} g, placed rigidly.
-  plain = s.gradient;
-  factor_.solve(plain);
-  plain = s.x - plain;
+  factor_.step(s.x, s.gradient, plain);
   if (!frame.springs.size()) align(frame, s, plain);
   candidate.x.resize(vertexCount(), 2);
   anderson_.next(flat(plain), flat(s.gradient), flatMutable(candidate.x));
