@@ -30,7 +30,10 @@ class TriangleShapes {
   // Recomputes triangle t in every key if its corners changed since it was computed. Every query
   // below needs it first (after refresh(), for triangles added since).
   void ensure(int t) {
-    if (static_cast<size_t>(t) >= corners_.size() || corners_[t] != mesh_.triangles[t]) recompute(t);
+    if (static_cast<size_t>(t) >= corners_.size()) return recompute(t);
+    // Compared one by one: std::array's operator!= calls memcmp, about 5% of a 17k-vertex run.
+    const Triangle &cached = corners_[t], &now = mesh_.triangles[t];
+    if (cached[0] != now[0] || cached[1] != now[1] || cached[2] != now[2]) recompute(t);
   }
 
   // Over all keys: the cosine of triangle t's largest angle in the key where it is largest (the
