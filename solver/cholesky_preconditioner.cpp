@@ -128,12 +128,17 @@ std::pair<double, double> dotPair(const int* index, const float* value, int coun
 
 }  // namespace
 
-void CholeskyPreconditioner::solve(Eigen::MatrixX2d& rhs) const {
+void CholeskyPreconditioner::loadWork(const Eigen::MatrixX2d& b) const {
   double* x = work_.data();
   for (int i = 0; i < n_; ++i) {
-    x[2 * perm_[i]] = rhs(i, 0);
-    x[2 * perm_[i] + 1] = rhs(i, 1);
+    x[2 * perm_[i]] = b(i, 0);
+    x[2 * perm_[i] + 1] = b(i, 1);
   }
+}
+
+void CholeskyPreconditioner::solve(Eigen::MatrixX2d& rhs) const {
+  const double* x = work_.data();
+  loadWork(rhs);
   solveWork();
   for (int i = 0; i < n_; ++i) {
     rhs(i, 0) = x[2 * perm_[i]];
@@ -143,11 +148,8 @@ void CholeskyPreconditioner::solve(Eigen::MatrixX2d& rhs) const {
 
 void CholeskyPreconditioner::step(const Eigen::MatrixX2d& position, const Eigen::MatrixX2d& g,
                                   Eigen::MatrixX2d& out) const {
-  double* x = work_.data();
-  for (int i = 0; i < n_; ++i) {
-    x[2 * perm_[i]] = g(i, 0);
-    x[2 * perm_[i] + 1] = g(i, 1);
-  }
+  const double* x = work_.data();
+  loadWork(g);
   solveWork();
   out.resize(n_, 2);
   for (int i = 0; i < n_; ++i) {

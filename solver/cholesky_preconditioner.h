@@ -37,6 +37,8 @@ class CholeskyPreconditioner {
 
  private:
   void buildSchedule();
+  // work_ <- b (n x 2), permuted and interleaved.
+  void loadWork(const Eigen::MatrixX2d& b) const;
   // work_ <- L^-T L^-1 work_ (the permuted system).
   void solveWork() const;
 
