@@ -33,21 +33,13 @@ AngleRange angles(const Eigen::Vector2d& p0, const Eigen::Vector2d& p1, const Ei
   return range;
 }
 
-// Cosine of the largest angle of a triangle from its squared edge lengths l[i]: it faces the
-// longest edge, and its cosine follows from the law of cosines (as in triangle_shapes.cpp).
-double largestAngle(const double l[3]) {
-  const int i = (l[0] >= l[1] && l[0] >= l[2]) ? 0 : (l[1] >= l[2] ? 1 : 2);
-  const double other = l[(i + 1) % 3], third = l[(i + 2) % 3];
-  return (other + third - l[i]) / (2 * std::sqrt(other * third));
-}
-
 // Cosine of the largest angle of triangle (p0, p1, p2), or -1 (180 degrees) when it is not positive.
 double largestAngleCosine(const double* x, const double* y, int p0, int p1, int p2) {
   const double ax = x[p1] - x[p0], ay = y[p1] - y[p0], bx = x[p2] - x[p0], by = y[p2] - y[p0];
   if (!(ax * by - ay * bx > 0)) return -1;
   const double cx = bx - ax, cy = by - ay;
-  const double l[3] = {ax * ax + ay * ay, cx * cx + cy * cy, bx * bx + by * by};  // edges 01, 12, 20
-  return largestAngle(l);
+  int edge;  // edges 01, 12, 20
+  return ib::largestAngleCosine(ax * ax + ay * ay, cx * cx + cy * cy, bx * bx + by * by, edge);
 }
 
 class Timer {

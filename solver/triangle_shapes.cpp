@@ -22,12 +22,8 @@ inline Shape triangleShape(double x0, double y0, double x1, double y1, double x2
                            double long2, double thinCosine) {
   const double ex0 = x1 - x0, ey0 = y1 - y0, ex1 = x2 - x1, ey1 = y2 - y1, ex2 = x0 - x2, ey2 = y0 - y2;
   const double l0 = ex0 * ex0 + ey0 * ey0, l1 = ex1 * ex1 + ey1 * ey1, l2 = ex2 * ex2 + ey2 * ey2;
-  // The largest angle faces the longest edge; its cosine by the law of cosines.
-  const bool first = l0 >= l1 && l0 >= l2, second = !first && l1 >= l2;
-  const double longest = first ? l0 : (second ? l1 : l2);
-  const double other = first ? l1 : (second ? l2 : l0), third = first ? l2 : (second ? l0 : l1);
-  const double cosine = (other + third - longest) / (2 * std::sqrt(other * third));
-  int flags = first ? 0 : (second ? 1 : 2);
+  int flags = 0;
+  const double cosine = largestAngleCosine(l0, l1, l2, flags);
   flags |= (l0 > long2) << 2 | (l1 > long2) << 3 | (l2 > long2) << 4;
   flags |= (l0 < short2) << 5 | (l1 < short2) << 6 | (l2 < short2) << 7;
   // Edge i faces the angle at p_(i+2), between p_i - p_(i+2) = e_(i+2) and p_(i+1) - p_(i+2) =

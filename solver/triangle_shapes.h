@@ -8,9 +8,21 @@
 
 #include "comesh_mesh.h"
 
+#include <cmath>
 #include <vector>
 
 namespace ib {
+
+// The largest angle of a triangle with squared edge lengths l0, l1, l2 (edge i: corner i to
+// corner i + 1) faces the longest edge, which goes to `edge`; returns its cosine, by the law of
+// cosines. Selects instead of branches and indexing, so that loops calling it vectorize.
+inline double largestAngleCosine(double l0, double l1, double l2, int& edge) {
+  const bool first = l0 >= l1 && l0 >= l2, second = !first && l1 >= l2;
+  const double longest = first ? l0 : (second ? l1 : l2);
+  const double other = first ? l1 : (second ? l2 : l0), third = first ? l2 : (second ? l0 : l1);
+  edge = first ? 0 : (second ? 1 : 2);
+  return (other + third - longest) / (2 * std::sqrt(other * third));
+}
 
 // Bounds per key (px): lengths are compared squared, angles by the square of their cosine.
 struct TriangleShapeBounds {
