@@ -21,12 +21,12 @@ class VertexStepper {
   struct Bounds {
     double minimumGap, maximumGap, chordTolerance;  // px
   };
-  VertexStepper(ComeshMesh& mesh, SobolevPreconditioner& preconditioner, int key, double odtWeight,
-                const Bounds& bounds, int threads)
-      : mesh_(mesh), preconditioner_(preconditioner), key_(key), odtWeight_(odtWeight), minimumGap_(bounds.minimumGap), maximumGap_(bounds.maximumGap),
-        chordTolerance_(bounds.chordTolerance) {
-    energy_.setThreads(threads);
-  }
+  // `energy` is prepared for key `key` on the first step; it is passed in so that its arrays are
+  // reused from key to key.
+  VertexStepper(ComeshMesh& mesh, SobolevPreconditioner& preconditioner, BlockEnergy& energy, int key,
+                double odtWeight, const Bounds& bounds)
+      : mesh_(mesh), preconditioner_(preconditioner), energy_(energy), key_(key), odtWeight_(odtWeight),
+        minimumGap_(bounds.minimumGap), maximumGap_(bounds.maximumGap), chordTolerance_(bounds.chordTolerance) {}
 
   // Returns the energy decrease relative to `objective` (eq. 8 when the sweep started; the block
   // energy itself if that is not a positive number), 0 when no step lowered the energy.
@@ -211,7 +211,7 @@ class VertexStepper {
     if (!mesh_.chordDeviation) return 0;
     const auto [lo, hi] = slideRange(v);
     const int arc = mesh_.arc[v];
-    return std::max({chordTolerance_, mesh_.chordDeviation(key_, arc, lo, u), mesh_.chordDeviation(key_, arc, u, hi)});
+    return std::max(chordTolerance_, mesh_.chordDeviation(key_, arc, lo, u, hi));
   }
 
   // The boundary edges on either side of a sliding vertex, at its new place, stay within `allowance`.
@@ -220,7 +220,7 @@ class VertexStepper {
     const auto [lo, hi] = slideRange(v);
     const int arc = mesh_.arc[v];
     const double now = mesh_.u(v, key_);
-    return mesh_.chordDeviation(key_, arc, lo, now) <= allowance && mesh_.chordDeviation(key_, arc, now, hi) <= allowance;
+    return mesh_.chordDeviation(key_, arc, lo, now, hi) <= allowance;
   }
 
   bool oneRingPositive(int v) const {
@@ -231,9 +231,9 @@ class VertexStepper {
 
   ComeshMesh& mesh_;
   SobolevPreconditioner& preconditioner_;
+  BlockEnergy& energy_;         // eq. 8's part that depends on key_, prepared for preparedVersion_
   int key_;
   double odtWeight_;
-  BlockEnergy energy_;          // eq. 8's part that depends on key_, prepared for preparedVersion_
   long preparedVersion_ = -1;   // the mesh's topologyVersion when energy_ was prepared
   double minimumGap_, maximumGap_;  // px
   double chordTolerance_;  // px
@@ -265,6 +265,8 @@ Multimesh comeshOptimize(const Multimesh& input, const ComeshBoundary* boundary,
   // Below a few thousand vertices a thread's share of a step is shorter than waking it.
   const int threads = mesh.vertexCount() < 4000 ? 1 : (options.threads > 0 ? options.threads : omp_get_max_threads());
   SobolevPreconditioner preconditioner(threads);
+  BlockEnergy blockEnergy;
+  blockEnergy.setThreads(threads);
   const std::vector<double> odtWeights = balancedOdtWeights(mesh, remesher, options.odtBalance);
   const int m = mesh.keyCount();
   std::vector<double> stepSize(m, 0.0);
@@ -284,10 +286,9 @@ Multimesh comeshOptimize(const Multimesh& input, const ComeshBoundary* boundary,
     double total = 0;
     for (int i = 0; i < m; ++i) {
       const double unit = remesher.unitLength(i);
-      VertexStepper stepper(mesh, preconditioner, i, odtWeights[i],
+      VertexStepper stepper(mesh, preconditioner, blockEnergy, i, odtWeights[i],
                             {options.bounds.collapseLength * unit, options.bounds.splitLength * unit,
-                             options.bounds.chordTolerance * unit},
-                            threads);
+                             options.bounds.chordTolerance * unit});
       double innerResidual = 0;
       for (int inner = 0; inner < options.innerIterations; ++inner) {
         ++r.innerIterations;

@@ -9,28 +9,49 @@
 
 namespace ib {
 
-void BlockEnergy::prepareTriangle(int k, const Triangle& tri, const std::vector<Eigen::MatrixX2d>& keys) {
+void BlockEnergy::prepareRange(int begin, int end, const std::vector<Eigen::MatrixX2d>& keys) {
   const int m = static_cast<int>(keys.size());
-  for (int c = 0; c < 3; ++c) corner_[c][k] = tri[c];
-  Eigen::Matrix2d S = Eigen::Matrix2d::Zero(), Q = Eigen::Matrix2d::Zero();
-  inverted_[k] = 0;
-  if (m >= 2) {
-    // With two keys, next and previous are the same key: both directions of its map.
-    const Eigen::Matrix2d next = edgeMatrix(keys[(key_ + 1) % m], tri);
-    const double nextArea = 0.5 * next.determinant();
-    if (nextArea > 0) S = next.transpose() * next / (4 * nextArea);
-    else inverted_[k] = 1;
-    const Eigen::Matrix2d previous = edgeMatrix(keys[(key_ + m - 1) % m], tri);
-    Eigen::Matrix2d adj;
-    adj << previous(1, 1), -previous(0, 1), -previous(1, 0), previous(0, 0);
-    Q = adj * adj.transpose();
+  if (m < 2) {  // ODT alone
+    for (auto* v : {&s00_, &s01_, &s11_, &q00_, &q01_, &q11_}) std::fill(v->begin() + begin, v->begin() + end, 0.0);
+    std::fill(inverted_.begin() + begin, inverted_.begin() + end, 0);
+    return;
   }
-  s00_[k] = S(0, 0);
-  s01_[k] = S(0, 1);
-  s11_[k] = S(1, 1);
-  q00_[k] = Q(0, 0);
-  q01_[k] = Q(0, 1);
-  q11_[k] = Q(1, 1);
+  // With two keys, next and previous are the same key: both directions of its map.
+  const Eigen::MatrixX2d& next = keys[(key_ + 1) % m];
+  const Eigen::MatrixX2d& previous = keys[(key_ + m - 1) % m];
+  const double* nx = next.col(0).data();
+  const double* ny = next.col(1).data();
+  const double* px = previous.col(0).data();
+  const double* py = previous.col(1).data();
+  const int* c0 = corner_[0].data();
+  const int* c1 = corner_[1].data();
+  const int* c2 = corner_[2].data();
+  double* s00 = s00_.data();
+  double* s01 = s01_.data();
+  double* s11 = s11_.data();
+  double* q00 = q00_.data();
+  double* q01 = q01_.data();
+  double* q11 = q11_.data();
+  char* inverted = inverted_.data();
+  // One pass with gathers and selects, which GCC vectorizes (the outputs alias no input); entries
+  // (r, c) of the 2 x 2 edge matrices are coordinate r of edge c.
+#pragma GCC ivdep
+  for (int k = begin; k < end; ++k) {
+    const double n00 = nx[c1[k]] - nx[c0[k]], n01 = nx[c2[k]] - nx[c0[k]];
+    const double n10 = ny[c1[k]] - ny[c0[k]], n11 = ny[c2[k]] - ny[c0[k]];
+    const double nextArea = 0.5 * (n00 * n11 - n01 * n10);
+    const bool positive = nextArea > 0;
+    const double scale = positive ? 4 * nextArea : 1.0;
+    s00[k] = positive ? (n00 * n00 + n10 * n10) / scale : 0.0;  // S = N^T N / (4 a_next)
+    s01[k] = positive ? (n00 * n01 + n10 * n11) / scale : 0.0;
+    s11[k] = positive ? (n01 * n01 + n11 * n11) / scale : 0.0;
+    inverted[k] = !positive;
+    const double p00 = px[c1[k]] - px[c0[k]], p01 = px[c2[k]] - px[c0[k]];
+    const double p10 = py[c1[k]] - py[c0[k]], p11 = py[c2[k]] - py[c0[k]];
+    q00[k] = p11 * p11 + p01 * p01;  // Q = adj(P) adj(P)^T, adj(P) = [p11 -p01; -p10 p00]
+    q01[k] = -p11 * p10 - p01 * p00;
+    q11[k] = p10 * p10 + p00 * p00;
+  }
 }
 
 void BlockEnergy::prepare(const std::vector<Triangle>& triangles, const std::vector<Eigen::MatrixX2d>& keys, int i,
@@ -43,8 +64,12 @@ void BlockEnergy::prepare(const std::vector<Triangle>& triangles, const std::vec
   for (auto* v : {&s00_, &s01_, &s11_, &q00_, &q01_, &q11_}) v->resize(count_);
   inverted_.resize(count_);
   int k = 0;
-  for (const Triangle& tri : triangles)
-    if (tri[0] >= 0) prepareTriangle(k++, tri, keys);
+  for (const Triangle& tri : triangles) {
+    if (tri[0] < 0) continue;
+    for (int c = 0; c < 3; ++c) corner_[c][k] = tri[c];
+    ++k;
+  }
+  prepareRange(0, count_, keys);
   neighbourInverted_ = std::find(inverted_.begin(), inverted_.end(), 1) != inverted_.end();
 }
 
@@ -54,7 +79,9 @@ void BlockEnergy::update(const std::vector<Triangle>& triangles, const std::vect
   if (!sameList) return prepare(triangles, keys, key_, odtWeight_);
   for (int k = 0; k < count_; ++k) {
     const Triangle& tri = triangles[k];
-    if (tri[0] != corner_[0][k] || tri[1] != corner_[1][k] || tri[2] != corner_[2][k]) prepareTriangle(k, tri, keys);
+    if (tri[0] == corner_[0][k] && tri[1] == corner_[1][k] && tri[2] == corner_[2][k]) continue;
+    for (int c = 0; c < 3; ++c) corner_[c][k] = tri[c];
+    prepareRange(k, k + 1, keys);
   }
   neighbourInverted_ = std::find(inverted_.begin(), inverted_.end(), 1) != inverted_.end();
 }
@@ -63,7 +90,7 @@ double BlockEnergy::evaluate(const Eigen::MatrixX2d& x, Eigen::MatrixX2d* gradie
   constexpr double kInfinity = std::numeric_limits<double>::infinity();
   if (neighbourInverted_) return kInfinity;
   const int t = count_;
-  scratch_.resize(12 * static_cast<size_t>(t));
+  if (scratch_.size() != 12 * t) scratch_.resize(12 * t);  // no zero fill: every entry read is written first
   // Per triangle: the edge matrix E, the unscaled ODT gradient and the MIPS gradient (each 2 x 2,
   // row = coordinate, column = edge).
   double* E00 = scratch_.data();

@@ -43,20 +43,19 @@ class BlockEnergy {
   double evaluate(const Eigen::MatrixX2d& x, Eigen::MatrixX2d* gradient) const;
 
  private:
-  // Sets triangle k's corners, S, Q and inverted flag.
-  void prepareTriangle(int k, const Triangle& tri, const std::vector<Eigen::MatrixX2d>& keys);
+  // S, Q and the inverted flag of triangles [begin, end) from their corners and the neighbour keys.
+  void prepareRange(int begin, int end, const std::vector<Eigen::MatrixX2d>& keys);
 
   int key_ = 0;                            // i
   int count_ = 0;                          // triangles kept
   int threads_ = 1;
-  bool hasNext_ = false, hasPrevious_ = false;
   bool neighbourInverted_ = false;         // a triangle not positive in a neighbouring key
   double odtWeight_ = 1;
   std::vector<int> corner_[3];             // [corner][triangle]: vertex indices
   std::vector<double> s00_, s01_, s11_;    // S per triangle (MIPS towards the next key)
   std::vector<double> q00_, q01_, q11_;    // Q per triangle (MIPS from the previous key)
   std::vector<char> inverted_;             // per triangle: not positive in the next key
-  mutable std::vector<double> scratch_;    // 12 x count_: edge matrices and gradient blocks
+  mutable Eigen::VectorXd scratch_;        // 12 count_: edge matrices and gradient blocks
 };
 
 }  // namespace ib

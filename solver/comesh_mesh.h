@@ -22,9 +22,11 @@ struct ComeshBoundary {
   std::vector<std::vector<char>> closedIn;  // [arc][key]: the arc is one side of a cut closed in that key
   // Key `key`'s point at fraction u in [0, 1] of arc `arc` (px).
   std::function<Eigen::Vector2d(int key, int arc, double u)> point;
-  // How far key `key`'s outline between fractions u0 <= u1 of arc `arc` strays from the straight
-  // chord between their points (px): a boundary edge must not cut across the outline's corners.
-  std::function<double(int key, int arc, double u0, double u1)> chordDeviation;
+  // How far key `key`'s outline between fractions u0 <= u1 <= u2 of arc `arc` strays from the
+  // straight chords u0 -> u1 and u1 -> u2 between their points (px; u1 = u2 for one chord): a
+  // boundary edge must not cut across the outline's corners. Two chords, because a sliding vertex
+  // has two boundary edges.
+  std::function<double(int key, int arc, double u0, double u1, double u2)> chordDeviation;
   // Length of arc `arc` in key `key` (px): a vertex moving by du along it moves at most |du| times
   // this. Optional; without it a vertex step tries every halving.
   std::function<double(int key, int arc)> arcLength;
@@ -75,7 +77,7 @@ struct ComeshMesh {
   std::vector<int> next, previous;            // [vertex]: neighbours along the boundary walk, -1 inside
   std::vector<std::vector<char>> closedIn;    // [arc][key]
   std::function<Eigen::Vector2d(int, int, double)> point;
-  std::function<double(int, int, double, double)> chordDeviation;
+  std::function<double(int, int, double, double, double)> chordDeviation;
   std::function<double(int, int)> arcLength;
   std::vector<std::vector<CohesivePair>> cohesive;  // [key]: C_i
   std::vector<std::vector<char>> outline;           // [key][vertex]: in B_i

@@ -131,11 +131,12 @@ double Remesher::relativeLength(int k, int a, int b) const {
   return (mesh_.keys[k].row(a) - mesh_.keys[k].row(b)).norm() / unit_[k];
 }
 
-double Remesher::chordDeviation(int k, int a, int b) const {
+double Remesher::chordDeviation(int k, int a, int b, int c) const {
   if (!mesh_.chordDeviation) return 0;
   const int arc = mesh_.arc[a];
-  const double end = (mesh_.arc[b] == arc && mesh_.u(b, k) > 0) ? mesh_.u(b, k) : 1.0;
-  return mesh_.chordDeviation(k, arc, mesh_.u(a, k), end);
+  // A vertex past a's arc is its end (the next arc's start, at u = 0 of that arc).
+  const auto along = [&](int v) { return (mesh_.arc[v] == arc && mesh_.u(v, k) > 0) ? mesh_.u(v, k) : 1.0; };
+  return mesh_.chordDeviation(k, arc, mesh_.u(a, k), along(b), along(c));
 }
 
 void Remesher::keyMoved(int k) { shapes_.keyMoved(k); }
@@ -346,9 +347,8 @@ bool Remesher::tryCollapse(int from, int to) {
   if (walk >= 0) {  // the merged boundary edge follows the outline as well as the two it replaces
     const int first = mesh_.previous[from], last = mesh_.next[from];
     for (int k = 0; k < mesh_.keyCount(); ++k) {
-      const double allowed = std::max({options_.chordTolerance * unit_[k], chordDeviation(k, first, from),
-                                       chordDeviation(k, from, last)});
-      if (chordDeviation(k, first, last) > allowed) return false;
+      const double allowed = std::max(options_.chordTolerance * unit_[k], chordDeviation(k, first, from, last));
+      if (chordDeviation(k, first, last, last) > allowed) return false;
     }
   }
   std::vector<Triangle> before, after;

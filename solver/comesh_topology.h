@@ -33,8 +33,9 @@ class Remesher {
 
   // Key k's unit of relative length: its mean edge length at construction (px).
   double unitLength(int k) const { return unit_[k]; }
-  // How far boundary edge (a, b), a before b on the walk, strays from key k's outline (px).
-  double chordDeviation(int k, int a, int b) const;
+  // How far boundary edges a -> b -> c, consecutive on the walk, stray from key k's outline
+  // (px); c = b for the single edge a -> b.
+  double chordDeviation(int k, int a, int b, int c) const;
 
   // Key k's positions have moved (a vertex step): what the passes cache of every triangle is
   // recomputed in that key before the next pass. Topology changes need no call.

@@ -121,8 +121,8 @@ ComeshBoundary comeshBoundary(const SharedBoundary& boundary, const ReferenceMes
   }
   auto shared = std::make_shared<const SharedBoundary>(boundary);
   out.point = [shared](int key, int arc, double u) { return shared->at(key, arc, u); };
-  out.chordDeviation = [shared](int key, int arc, double u0, double u1) {
-    return shared->chordDeviation(key, arc, u0, u1);
+  out.chordDeviation = [shared](int key, int arc, double u0, double u1, double u2) {
+    return shared->chordDeviation(key, arc, u0, u1, u2);
   };
   out.arcLength = [shared](int key, int arc) { return shared->arcLength(key, arc); };
   return out;

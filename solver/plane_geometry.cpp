@@ -91,38 +91,68 @@ size_t ArcLengthLoop::segmentAt(double s) const {
   return i;
 }
 
-Eigen::Vector2d ArcLengthLoop::at(double s) const {
+double ArcLengthLoop::wrap(double s) const {
   const double total = length();
-  if (points_.empty()) return Eigen::Vector2d::Zero();
-  if (!(total > 0)) return points_[0];
-  if (!(s >= 0 && s < total)) {
-    s = std::fmod(s, total);
-    if (s < 0) s += total;
-  }
-  const size_t i = segmentAt(s);
+  if (s >= 0 && s < total) return s;
+  if (s >= total && s < 2 * total) return s - total;  // exact, as fmod is (the end of a loop's last arc)
+  s = std::fmod(s, total);
+  return s < 0 ? s + total : s;
+}
+
+Eigen::Vector2d ArcLengthLoop::pointIn(size_t i, double local) const {
   const double span = cumulative_[i + 1] - cumulative_[i];
-  const double t = span > 0 ? (s - cumulative_[i]) / span : 0.0;
+  const double t = span > 0 ? (local - cumulative_[i]) / span : 0.0;
   return (1 - t) * points_[i] + t * points_[(i + 1) % points_.size()];
 }
 
-double ArcLengthLoop::chordDeviation(double s0, double s1) const {
+Eigen::Vector2d ArcLengthLoop::at(double s) const {
+  if (points_.empty()) return Eigen::Vector2d::Zero();
+  if (!(length() > 0)) return points_[0];
+  const double local = wrap(s);
+  return pointIn(segmentAt(local), local);
+}
+
+double ArcLengthLoop::chordDeviation(std::initializer_list<double> ends) const {
   const double total = length();
-  if (points_.size() < 2 || !(total > 0) || !(s1 > s0)) return 0;
-  const Eigen::Vector2d a = at(s0), b = at(s1);
-  double base = std::floor(s0 / total) * total;  // start of the lap s0 lies in
-  // The first point past s0 - base (an upper bound over cumulative_).
-  const double local = s0 - base;
-  size_t i = local < 0 ? 0 : local >= total ? points_.size() + 1 : segmentAt(local) + 1;
-  while (i < cumulative_.size() && cumulative_[i] <= local) ++i;
+  if (points_.size() < 2 || !(total > 0) || ends.size() < 2) return 0;
+  const double* s = ends.begin();
+  const size_t last = points_.size() - 1;
+  // The chord starts at local arc length `local` (s[k - 1] wrapped), in segment i.
+  double local = wrap(s[0]);
+  size_t i = segmentAt(local);
+  Eigen::Vector2d a = pointIn(i, local);
   double worst = 0;  // squared: the square root of the largest square is the largest distance
-  for (;; ++i) {
-    if (i >= points_.size()) {  // cumulative_[size] is point 0 of the next lap
-      i = 0;
-      base += total;
+  for (size_t k = 1; k < ends.size(); ++k) {
+    const double end = wrap(s[k]);
+    if (!(s[k] > s[k - 1])) {  // no chord: start the next one here
+      local = end;
+      i = segmentAt(local);
+      a = pointIn(i, local);
+      continue;
     }
-    if (base + cumulative_[i] >= s1) break;
-    const Eigen::Vector2d& p = points_[i];
-    worst = std::max(worst, (a + closestParameter(a, b, p) * (b - a) - p).squaredNorm());
+    const bool wholeLap = s[k] - s[k - 1] >= total, wraps = wholeLap || end < local;
+    // The end's segment, walking on from the start's (from point 0 past the end of the lap): the
+    // points walked over are the ones between, so this costs no more than the scan below.
+    size_t j = wraps ? 0 : i;
+    while (j < last && cumulative_[j + 1] <= end) ++j;
+    const Eigen::Vector2d b = pointIn(j, end);
+    // Points strictly between the ends: after i (cumulative_[i + 1] > local) up to the end of the
+    // lap if the chord wraps, then from point 0, stopping before the end.
+    const auto farthest = [&](size_t from, size_t to, double below) {
+      for (size_t p = from; p < to && cumulative_[p] < below; ++p)
+        worst = std::max(worst, (a + closestParameter(a, b, points_[p]) * (b - a) - points_[p]).squaredNorm());
+    };
+    if (wholeLap) {
+      farthest(0, points_.size(), total);
+    } else if (wraps) {
+      farthest(i + 1, points_.size(), total);
+      farthest(0, j + 1, end);
+    } else {
+      farthest(i + 1, j + 1, end);
+    }
+    local = end;
+    i = j;
+    a = b;
   }
   return std::sqrt(worst);
 }

@@ -4,6 +4,7 @@
 #include "tracing.h"
 
 #include <Eigen/Core>
+#include <initializer_list>
 #include <string>
 
 namespace ib {
@@ -41,12 +42,20 @@ class ArcLengthLoop {
   Eigen::Vector2d at(double s) const;
   // Largest distance from the loop between arc lengths s0 <= s1 (walking forwards, modulo
   // length()) to the chord from at(s0) to at(s1): how far the chord cuts across corners.
-  double chordDeviation(double s0, double s1) const;
+  double chordDeviation(double s0, double s1) const { return chordDeviation({s0, s1}); }
+  // The same for a path of chords at(s0) -> at(s1) -> ... with s0 <= s1 <= ...: the largest
+  // distance of the loop between consecutive ends from their chord (a chord whose ends are not
+  // increasing counts 0). One lookup for the whole path; the ends after it are found by walking.
+  double chordDeviation(std::initializer_list<double> ends) const;
 
  private:
   // The segment holding arc length s in [0, length()]: the largest i < points with
   // cumulative_[i] <= s (what a binary search over cumulative_ gives), found from its bucket.
   size_t segmentAt(double s) const;
+  // Arc length s taken into [0, length()).
+  double wrap(double s) const;
+  // The point at arc length `local` in [0, length()] on segment i (cumulative_[i] <= local).
+  Eigen::Vector2d pointIn(size_t i, double local) const;
 
   Polyline points_;
   std::vector<double> cumulative_;  // size points + 1; cumulative_[i] = arc length to point i

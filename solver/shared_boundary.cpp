@@ -263,11 +263,11 @@ Eigen::Vector2d SharedBoundary::at(int key, int arc, double u) const {
   return kb.loops[a.loop].at(kb.arcStarts[a.loop][a.indexInLoop] + u * arcLength(key, arc));
 }
 
-double SharedBoundary::chordDeviation(int key, int arc, double u0, double u1) const {
+double SharedBoundary::chordDeviation(int key, int arc, double u0, double u1, double u2) const {
   const BoundaryArc& a = arcs[arc];
   const KeyBoundary& kb = keys[key];
   const double start = kb.arcStarts[a.loop][a.indexInLoop], length = arcLength(key, arc);
-  return kb.loops[a.loop].chordDeviation(start + u0 * length, start + u1 * length);
+  return kb.loops[a.loop].chordDeviation({start + u0 * length, start + u1 * length, start + u2 * length});
 }
 
 SharedBoundary matchBoundaries(const Scene& scene, const std::vector<KeyShape>& shapes,

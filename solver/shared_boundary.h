@@ -43,9 +43,9 @@ struct SharedBoundary {
   double arcLength(int key, int arc) const;
   // The point of key `key` at fraction u in [0, 1] of arc `arc`'s length.
   Eigen::Vector2d at(int key, int arc, double u) const;
-  // Largest distance of key `key`'s outline between fractions u0 <= u1 of arc `arc` from the
-  // chord between their points (px).
-  double chordDeviation(int key, int arc, double u0, double u1) const;
+  // Largest distance of key `key`'s outline between fractions u0 <= u1 <= u2 of arc `arc` from
+  // the chords u0 -> u1 and u1 -> u2 between their points (px); u1 = u2 for a single chord.
+  double chordDeviation(int key, int arc, double u0, double u1, double u2) const;
 };
 
 // Matches the keys' loops to the reference key's. Every featured loop must carry the same

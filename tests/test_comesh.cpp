@@ -67,8 +67,8 @@ ComeshBoundary reorderKeys(const ComeshBoundary& boundary, const std::vector<int
   for (size_t a = 0; a < boundary.closedIn.size(); ++a)
     for (size_t j = 0; j < order.size(); ++j) out.closedIn[a][j] = boundary.closedIn[a][order[j]];
   out.point = [boundary, order](int key, int arc, double u) { return boundary.point(order[key], arc, u); };
-  out.chordDeviation = [boundary, order](int key, int arc, double u0, double u1) {
-    return boundary.chordDeviation(order[key], arc, u0, u1);
+  out.chordDeviation = [boundary, order](int key, int arc, double u0, double u1, double u2) {
+    return boundary.chordDeviation(order[key], arc, u0, u1, u2);
   };
   out.arcLength = [boundary, order](int key, int arc) { return boundary.arcLength(order[key], arc); };
   return out;

@@ -86,7 +86,29 @@ TEST_CASE("arc-length loop: chord deviation is the largest distance of the point
       const double s0 = k % 10 == 0 ? loop.parameterOfPoint(k % static_cast<int>(loop.points().size())) : start(random);
       const double s1 = s0 + span(random);
       INFO("trial " << trial << ", s0 = " << s0 << ", s1 = " << s1);
-      REQUIRE(loop.chordDeviation(s0, s1) == deviationByScan(loop, s0, s1));
+      REQUIRE(loop.chordDeviation(s0, s1) == Approx(deviationByScan(loop, s0, s1)).epsilon(1e-12).margin(1e-9));
     }
+  }
+}
+
+TEST_CASE("arc-length loop: a path's chord deviation is the largest of its chords' deviations") {
+  std::mt19937 random(12);
+  for (int trial = 0; trial < 20; ++trial) {
+    const ArcLengthLoop loop(unevenLoop(random));
+    std::uniform_real_distribution<double> start(-loop.length(), 2 * loop.length()), span(0, 0.6 * loop.length());
+    for (int k = 0; k < 300; ++k) {
+      const double s0 = start(random);
+      // Every fifth path has a middle end that goes backwards (that chord counts 0) or repeats s0.
+      const double s1 = k % 5 == 0 ? s0 - span(random) : k % 5 == 1 ? s0 : s0 + span(random);
+      const double s2 = s1 + span(random);
+      const double expected = std::max(s1 > s0 ? deviationByScan(loop, s0, s1) : 0.0, deviationByScan(loop, s1, s2));
+      INFO("trial " << trial << ", s = " << s0 << ", " << s1 << ", " << s2);
+      REQUIRE(loop.chordDeviation({s0, s1, s2}) == Approx(expected).epsilon(1e-12).margin(1e-9));
+    }
+    // Paths over more than a whole lap, in two chords and in one.
+    const double s0 = start(random), s1 = s0 + 0.7 * loop.length(), s2 = s0 + 1.5 * loop.length();
+    REQUIRE(loop.chordDeviation({s0, s1, s2}) ==
+            Approx(std::max(deviationByScan(loop, s0, s1), deviationByScan(loop, s1, s2))).epsilon(1e-12).margin(1e-9));
+    REQUIRE(loop.chordDeviation({s0, s2}) == Approx(deviationByScan(loop, s0, s2)).epsilon(1e-12).margin(1e-9));
   }
 }
