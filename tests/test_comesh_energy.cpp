@@ -5,6 +5,7 @@
 
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <limits>
 #include <random>
 
 using namespace ib;
@@ -91,6 +92,38 @@ TEST_CASE("comesh energy: eq. 8 minus key i's block energy does not depend on X_
       moved[i] = similarity(jittered(grid, 20 + i, 0.1), 0.2, 1.1, {0.5, 0});
       const double movedRest = comeshEnergy(grid.triangles, moved, weights) - block.evaluate(moved[i], nullptr);
       CHECK(movedRest == Approx(rest).epsilon(1e-10).margin(1e-10 * comeshEnergy(grid.triangles, keys, weights)));
+    }
+  }
+}
+
+TEST_CASE("comesh energy: eq. 8 is the sum of its parts as odtEnergy, totalArea and mipsEnergy give them, for 1 to 4 keys") {
+  const GridMesh grid = rectangleGrid(6, 4, 3, 2);
+  const std::vector<Eigen::MatrixX2d> all = {jittered(grid, 7, 0.12),
+                                             similarity(jittered(grid, 8, 0.12), 0.3, 1.7, {4, -1}),
+                                             jittered(grid, 9, 0.12) * 0.8, similarity(jittered(grid, 10, 0.1), -1, 0.5, {0, 3})};
+  const std::vector<double> odtWeights = {0.7, 1.3, 0.4, 2.0};
+  // A deleted triangle (corners -1), as Comesh's working mesh holds until it compacts, counts nothing.
+  std::vector<Triangle> withDeleted = grid.triangles;
+  withDeleted.insert(withDeleted.begin() + 3, Triangle{-1, -1, -1});
+  for (int m = 1; m <= 4; ++m) {
+    const std::vector<Eigen::MatrixX2d> keys(all.begin(), all.begin() + m);
+    const std::vector<double> weights(odtWeights.begin(), odtWeights.begin() + m);
+    double expected = 0;
+    for (int i = 0; i < m; ++i) {
+      expected += weights[i] * odtEnergy(grid.triangles, keys[i], nullptr) / totalArea(grid.triangles, keys[i]);
+      if (m > 1) expected += mipsEnergy(grid.triangles, keys[i], keys[(i + 1) % m], nullptr, nullptr);
+    }
+    INFO(m << " keys");
+    CHECK(comeshEnergy(grid.triangles, keys, weights) == Approx(expected).epsilon(1e-12));
+    CHECK(comeshEnergy(withDeleted, keys, weights) == Approx(expected).epsilon(1e-12));
+    if (m == 1) continue;
+    // A triangle turned over in any key makes some MIPS term, and so eq. 8, infinite.
+    for (int k = 0; k < m; ++k) {
+      std::vector<Eigen::MatrixX2d> turned = keys;
+      const Triangle& t = grid.triangles[5];
+      turned[k].row(t[0]) = turned[k].row(t[1]) + turned[k].row(t[2]) - turned[k].row(t[0]);  // across edge t1 t2
+      CHECK(mipsEnergy(grid.triangles, turned[(k + m - 1) % m], turned[k], nullptr, nullptr) == std::numeric_limits<double>::infinity());
+      CHECK(comeshEnergy(grid.triangles, turned, weights) == std::numeric_limits<double>::infinity());
     }
   }
 }
