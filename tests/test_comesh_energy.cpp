@@ -47,6 +47,12 @@ Eigen::MatrixX2d similarity(const Eigen::MatrixX2d& x, double angle, double scal
   return (x * r.transpose() * scale).rowwise() + shift;
 }
 
+// Four differently distorted keys of `grid`, for the tests over 1 to 4 keys.
+std::vector<Eigen::MatrixX2d> fourKeys(const GridMesh& grid) {
+  return {jittered(grid, 7, 0.12), similarity(jittered(grid, 8, 0.12), 0.3, 1.7, {4, -1}), jittered(grid, 9, 0.12) * 0.8,
+          similarity(jittered(grid, 10, 0.1), -1, 0.5, {0, 3})};
+}
+
 }  // namespace
 
 TEST_CASE("comesh energy: ODT, MIPS and the block objective match central differences") {
@@ -77,9 +83,7 @@ TEST_CASE("comesh energy: ODT, MIPS and the block objective match central differ
 
 TEST_CASE("comesh energy: eq. 8 minus key i's block energy does not depend on X_i, for 1 to 4 keys") {
   const GridMesh grid = rectangleGrid(6, 4, 3, 2);
-  const std::vector<Eigen::MatrixX2d> all = {jittered(grid, 7, 0.12),
-                                             similarity(jittered(grid, 8, 0.12), 0.3, 1.7, {4, -1}),
-                                             jittered(grid, 9, 0.12) * 0.8, similarity(jittered(grid, 10, 0.1), -1, 0.5, {0, 3})};
+  const std::vector<Eigen::MatrixX2d> all = fourKeys(grid);
   const std::vector<double> odtWeights = {0.7, 1.3, 0.4, 2.0};
   for (int m = 1; m <= 4; ++m) {
     std::vector<Eigen::MatrixX2d> keys(all.begin(), all.begin() + m);
@@ -98,9 +102,7 @@ TEST_CASE("comesh energy: eq. 8 minus key i's block energy does not depend on X_
 
 TEST_CASE("comesh energy: eq. 8 is the sum of its parts as odtEnergy, totalArea and mipsEnergy give them, for 1 to 4 keys") {
   const GridMesh grid = rectangleGrid(6, 4, 3, 2);
-  const std::vector<Eigen::MatrixX2d> all = {jittered(grid, 7, 0.12),
-                                             similarity(jittered(grid, 8, 0.12), 0.3, 1.7, {4, -1}),
-                                             jittered(grid, 9, 0.12) * 0.8, similarity(jittered(grid, 10, 0.1), -1, 0.5, {0, 3})};
+  const std::vector<Eigen::MatrixX2d> all = fourKeys(grid);
   const std::vector<double> odtWeights = {0.7, 1.3, 0.4, 2.0};
   // A deleted triangle (corners -1), as Comesh's working mesh holds until it compacts, counts nothing.
   std::vector<Triangle> withDeleted = grid.triangles;
