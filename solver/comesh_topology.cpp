@@ -125,7 +125,8 @@ Remesher::Remesher(ComeshMesh& mesh, const RemeshOptions& options)
       options_(options),
       cosCollapse_(std::cos(options.collapseAngle * 3.14159265358979323846 / 180)),
       unit_(meanEdgeLengths(mesh)),
-      shapes_(mesh, shapeBounds(unit_, options)) {}
+      shapes_(mesh, shapeBounds(unit_, options)),
+      moves_(mesh.keyCount(), 0) {}
 
 double Remesher::relativeLength(int k, int a, int b) const {
   return (mesh_.keys[k].row(a) - mesh_.keys[k].row(b)).norm() / unit_[k];
@@ -139,11 +140,14 @@ double Remesher::chordDeviation(int k, int a, int b, int c) const {
   return mesh_.chordDeviation(k, arc, mesh_.u(a, k), along(b), along(c));
 }
 
-void Remesher::keyMoved(int k) { shapes_.keyMoved(k); }
+void Remesher::keyMoved(int k) {
+  shapes_.keyMoved(k);
+  ++moves_[k];
+}
 
 void Remesher::refreshCaches() {
   shapes_.refresh();
-  refusedBy_.resize(mesh_.triangles.size(), 0);
+  refusals_.resize(mesh_.triangles.size());
   twin_.resize(mesh_.triangles.size(), -1);
 }
 
@@ -152,17 +156,17 @@ Remesher::WorstAngle Remesher::worstAngle(int t) {
   return {shapes_.worstCosine(t), shapes_.worstEdge(t)};
 }
 
-bool Remesher::flipImproves(int a, int b, int c, int d, double before, int& hint) const {
+bool Remesher::flipImproves(int a, int b, int c, int d, double before, Refusal& refusal) const {
   const int m = mesh_.keyCount();
   // Every key must improve; the key that refused this triangle's flip last time is asked first,
   // as it usually refuses again (the answer does not depend on the order).
   for (int j = 0; j < m; ++j) {
-    const int k = (hint + j) % m;
+    const int k = (refusal.key + j) % m;
     const double* x = mesh_.keys[k].col(0).data();
     const double* y = mesh_.keys[k].col(1).data();
     const double after = std::min(largestAngleCosine(x, y, c, a, d), largestAngleCosine(x, y, d, b, c));
-    if (!(after > before + 1e-12)) {
-      hint = k;
+    if (!(after > before + kFlipGain)) {
+      refusal = {k, a, b, c, d, after, moves_[k]};
       return false;
     }
   }
@@ -202,7 +206,10 @@ int Remesher::flipEdges(RemeshCounts& counts) {
     const int c = tri[(worst.edge + 2) % 3], d = mesh_.thirdCorner(twin, b, a);
     if (c == d || (mesh_.onBoundary(c) && mesh_.onBoundary(d))) continue;
     const double before = std::min(worst.cosine, worstAngle(twin).cosine);
-    if (!flipImproves(a, b, c, d, before, refusedBy_[t]) || connected(mesh_, c, d)) continue;
+    Refusal& refusal = refusals_[t];
+    if (refusal.stands(a, b, c, d, before, moves_) || !flipImproves(a, b, c, d, before, refusal) ||
+        connected(mesh_, c, d))
+      continue;
     mesh_.flip(a, b);
     ++flips;
   }

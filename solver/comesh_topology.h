@@ -64,10 +64,26 @@ class Remesher {
   WorstAngle worstAngle(int t);
   // Brings the per-triangle caches to the current triangle count and recomputes the keys that moved.
   void refreshCaches();
+  // Why a triangle's flip candidate was last refused: key `key` gave the two new triangles the
+  // largest-angle cosine `after` (not above the old worst). While that key has not moved and the
+  // candidate's four corners are the same, `after` is still what that key gives, so a flip is
+  // refused again without looking at any key as long as the old worst stays at least as good.
+  // Most candidates (obtuse triangles, hundreds per pass at 16 keys) are refused pass after pass.
+  struct Refusal {
+    int key = 0;                         // also the key asked first next time
+    int a = -1, b = -1, c = -1, d = -1;  // the candidate: edge (a, b), third corners c and d
+    double after = 0;
+    long moves = -1;                     // moves_[key] when refused
+    bool stands(int p, int q, int r, int s, double before, const std::vector<long>& keyMoves) const {
+      return moves == keyMoves[key] && a == p && b == q && c == r && d == s && !(after > before + kFlipGain);
+    }
+  };
+  // How much a flip must raise the largest-angle cosine to count as lowering the angle.
+  static constexpr double kFlipGain = 1e-12;
   // Flipping (a, b) of triangles (a, b, c), (b, a, d) leaves every key positive and every new angle
-  // smaller than the largest before (given as its cosine). hint: the key to ask first; receives
-  // the key that refused.
-  bool flipImproves(int a, int b, int c, int d, double before, int& hint) const;
+  // smaller than the largest before (given as its cosine). Asks refusal.key first; a refusal is
+  // recorded in `refusal`.
+  bool flipImproves(int a, int b, int c, int d, double before, Refusal& refusal) const;
   // The triangle across edge (a, b) of triangle t (b -> a), or -1; remembered per triangle and
   // checked before use, as the topology changes.
   int twinOf(int t, int a, int b);
@@ -88,7 +104,8 @@ class Remesher {
   // Every triangle's largest angle and candidate edges in every key: the flip test needs every
   // key of every triangle, while a vertex step moves only one key.
   TriangleShapes shapes_;
-  std::vector<int> refusedBy_;           // [triangle]: the key that last refused its flip (a hint)
+  std::vector<Refusal> refusals_;        // [triangle]: its flip candidate's last refusal
+  std::vector<long> moves_;              // [key]: keyMoved calls
   std::vector<int> twin_;                // [triangle]: the last twin found by twinOf (a hint), or -1
 };
 

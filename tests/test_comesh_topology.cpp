@@ -1,5 +1,6 @@
 #include "comesh_mesh.h"
 #include "comesh_topology.h"
+#include "shape_generators.h"
 
 #include <catch2/catch.hpp>
 #include <algorithm>
@@ -57,4 +58,45 @@ TEST_CASE("comesh flips: a flip is made exactly when it lowers the largest angle
   // Both outcomes are exercised.
   CHECK(flipped >= 50);
   CHECK(kept >= 50);
+}
+
+TEST_CASE("comesh flips: a remesher that remembers refused flips flips exactly what a fresh one does, pass after pass, as keys move") {
+  const GridMesh grid = rectangleGrid(12, 9, 3, 2);
+  // Interior vertices moved by up to `amount` of the grid spacing: many obtuse triangles.
+  const auto jitteredKey = [&](unsigned seed, double amount) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> jitter(-amount * 3 / 11, amount * 3 / 11);
+    Eigen::MatrixX2d x = grid.points;
+    for (int v = 0; v < x.rows(); ++v)
+      if (std::find(grid.boundary.begin(), grid.boundary.end(), v) == grid.boundary.end())
+        x.row(v) += Eigen::RowVector2d(jitter(rng), jitter(rng));
+    return x;
+  };
+  const int m = 3;
+  Multimesh mesh(static_cast<int>(grid.points.rows()), grid.triangles);
+  for (int k = 0; k < m; ++k) mesh.addKey(jitteredKey(10 + k, 0.35), {}, grid.boundary);
+  ComeshMesh working(mesh, nullptr);
+  Remesher remesher(working, RemeshOptions{});
+  int total = 0, changed = 0;
+  for (int pass = 0; pass < 12; ++pass) {
+    ComeshMesh copy = working;
+    RemeshCounts counts;
+    const int fresh = Remesher(copy, RemeshOptions{}).flipEdges(counts);
+    const int remembered = remesher.flipEdges(counts);
+    INFO("pass " << pass);
+    CHECK(remembered == fresh);
+    CHECK(working.triangles == copy.triangles);
+    total += remembered;
+    // One key moves (as a vertex step moves one key); every second pass, far enough to change
+    // which flips its refusals allowed.
+    const int k = pass % m;
+    const Eigen::MatrixX2d before = working.keys[k];
+    const Eigen::MatrixX2d target = jitteredKey(100 + pass, 0.35);
+    working.keys[k] = before + (pass % 2 ? 0.02 : 0.5) * (target - before);
+    remesher.keyMoved(k);
+    changed += pass % 2 == 0;
+  }
+  // The passes did flip edges after the first (not only the first pass's clean-up).
+  CHECK(total > 0);
+  CHECK(changed > 0);
 }
