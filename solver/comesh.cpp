@@ -132,7 +132,7 @@ class VertexStepper {
     const GapReach gap = gapReach(v, startU[v]);
     int tries = 0;
     while (tries < kHalvings && !gap.unrepairable(std::abs(std::ldexp(stepSize, -tries) * slide_[v]))) ++tries;
-    double allowance = -1;  // of the start; found when a halving first keeps its gaps (most that fail never do)
+    double allowance = -1;  // of the start; found when a halving first passes the cheap tests (most that fail never do)
     // Places v at halving h; leaves it there if it fits, else back at its start.
     const auto fits = [&](int h) {
       const double u = startU[v] + std::ldexp(stepSize, -h) * slide_[v];
@@ -140,9 +140,11 @@ class VertexStepper {
       if (!(u > lo && u < hi)) return false;
       mesh_.keys[key_].row(v) = mesh_.point(key_, mesh_.arc[v], u).transpose();
       mesh_.u(v, key_) = u;
-      const bool gapsKept = keepsGap(v);
-      if (gapsKept && allowance < 0) allowance = outlineAllowance(v, startU[v]);
-      if (gapsKept && followsOutline(v, allowance) && oneRingPositive(v)) return true;
+      // The cheap tests first: the outline test walks the outline between the walk neighbours.
+      if (keepsGap(v) && oneRingPositive(v)) {
+        if (allowance < 0) allowance = outlineAllowance(v, startU[v]);
+        if (followsOutline(v, allowance)) return true;
+      }
       mesh_.keys[key_].row(v) = start.row(v);
       mesh_.u(v, key_) = startU[v];
       return false;
