@@ -151,8 +151,7 @@ void Remesher::refreshCaches() {
   twin_.resize(mesh_.triangles.size(), -1);
 }
 
-Remesher::WorstAngle Remesher::worstAngle(int t) {
-  shapes_.ensure(t);
+Remesher::WorstAngle Remesher::worstAngle(int t) const {
   return {shapes_.worstCosine(t), shapes_.worstEdge(t)};
 }
 
@@ -211,6 +210,7 @@ int Remesher::flipEdges(RemeshCounts& counts) {
         connected(mesh_, c, d))
       continue;
     mesh_.flip(a, b);
+    refreshCaches();  // triangles t and twin changed; the twin may come later in this pass
     ++flips;
   }
   counts.flips += flips;
@@ -244,6 +244,7 @@ int Remesher::splitEdges(RemeshCounts& counts) {
       const int a = tri[i], b = tri[(i + 1) % 3];
       if (a > b && mesh_.triangleWith(b, a) >= 0) continue;  // inside edges once
       if (!trySplit(a, b)) continue;
+      refreshCaches();
       ++splits;  // triangle t changed: its remaining edges as they are now
       candidates = edgeCandidates(static_cast<int>(t), false);
     }
@@ -307,8 +308,7 @@ bool Remesher::trySplit(int a, int b) {
   return true;
 }
 
-int Remesher::edgeCandidates(int t, bool collapse) {
-  shapes_.ensure(t);
+int Remesher::edgeCandidates(int t, bool collapse) const {
   return collapse ? (shapes_.shortInEveryKey(t) | shapes_.thinInEveryKey(t)) : shapes_.longInEveryKey(t);
 }
 
@@ -323,6 +323,7 @@ int Remesher::collapseEdges(RemeshCounts& counts) {
       const Triangle tri = mesh_.triangles[t];
       if (!(candidates & (1 << i))) continue;
       if (!tryCollapse(tri[i], tri[(i + 1) % 3]) && !tryCollapse(tri[(i + 1) % 3], tri[i])) continue;
+      refreshCaches();
       ++collapses;  // triangle t changed or went away: its remaining edges as they are now
       candidates = mesh_.triangles[t][0] < 0 ? 0 : edgeCandidates(static_cast<int>(t), true);
     }

@@ -61,8 +61,9 @@ class Remesher {
     int edge = 0;
   };
   // Over all keys, for triangle t.
-  WorstAngle worstAngle(int t);
-  // Brings the per-triangle caches to the current triangle count and recomputes the keys that moved.
+  WorstAngle worstAngle(int t) const;
+  // Brings the per-triangle caches to the current triangle count and recomputes the keys that
+  // moved and the triangles that changed: at the start of a pass and after every operation.
   void refreshCaches();
   // Why a triangle's flip candidate was last refused: key `key` gave the two new triangles the
   // largest-angle cosine `after` (not above the old worst). While that key has not moved and the
@@ -92,7 +93,7 @@ class Remesher {
   bool collapsible(int from, int to) const;
   // Bit i set: edge i of triangle t (tri[i] -> tri[i+1]) is, with `collapse`, too short in every
   // key or faces an angle too small in every key; without, too long in every key.
-  int edgeCandidates(int t, bool collapse);
+  int edgeCandidates(int t, bool collapse) const;
   double relativeLength(int k, int a, int b) const;
   // Where a new vertex at the middle of boundary edge (a, b) goes in every key (a before b on the walk).
   std::vector<Eigen::Vector2d> boundaryMidpoint(int a, int b, Eigen::RowVectorXd& u) const;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 namespace ib {
 
@@ -111,10 +112,26 @@ void TriangleShapes::refresh() {
     moved = true;
   }
   if (moved) combineKeys(0, count);
+  syncCorners();
+}
+
+void TriangleShapes::syncCorners() {
+  static_assert(sizeof(Triangle) == 3 * sizeof(int), "corners are compared as bytes");
+  // Blocks of 64 triangles: memcmp is fast on long runs, and a change (a flip, a split, a
+  // collapse: a few triangles) touches few blocks.
+  constexpr size_t kBlock = 64;
+  const size_t count = corners_.size();
+  for (size_t first = 0; first < count; first += kBlock) {
+    const size_t end = std::min(count, first + kBlock);
+    if (std::memcmp(&corners_[first], &mesh_.triangles[first], (end - first) * sizeof(Triangle)) == 0) continue;
+    for (size_t t = first; t < end; ++t) {
+      const Triangle &cached = corners_[t], &now = mesh_.triangles[t];
+      if (cached[0] != now[0] || cached[1] != now[1] || cached[2] != now[2]) recompute(static_cast<int>(t));
+    }
+  }
 }
 
 void TriangleShapes::recompute(int t) {
-  if (static_cast<size_t>(t) >= corners_.size()) resize(mesh_.triangles.size());
   for (size_t k = 0; k < stale_.size(); ++k) computeKey(static_cast<int>(k), t, t + 1);
   combineKeys(t, t + 1);
   corners_[t] = mesh_.triangles[t];

@@ -2,8 +2,9 @@
 // squared edge lengths: its largest angle and the edge facing it (flips), which edges are too long
 // (splits), and which are too short or face too small an angle (collapses). A vertex step moves
 // one key, so keys are recomputed one at a time, in one pass over all triangles that vectorizes;
-// a triangle whose corners changed (a flip, a split, a collapse) is recomputed in every key when
-// next asked for. The passes ask about all keys at once, so that is kept combined as well.
+// a triangle whose corners changed (a flip, a split, a collapse) is recomputed in every key, found
+// by comparing corners block by block (memcmp), so that the passes read the answers with no test
+// per triangle. The passes ask about all keys at once, so that is kept combined as well.
 #pragma once
 
 #include "comesh_mesh.h"
@@ -37,16 +38,10 @@ class TriangleShapes {
 
   // Key k's positions moved: it is recomputed for every triangle at the next refresh().
   void keyMoved(int k);
-  // Brings the cache to the mesh's triangle count and recomputes the keys that moved.
+  // Brings the cache to the mesh's triangle count, recomputes the keys that moved and, in every
+  // key, the triangles whose corners changed or that were added. The queries below answer for
+  // the mesh as it was at the last refresh().
   void refresh();
-  // Recomputes triangle t in every key if its corners changed since it was computed. Every query
-  // below needs it first (after refresh(), for triangles added since).
-  void ensure(int t) {
-    if (static_cast<size_t>(t) >= corners_.size()) return recompute(t);
-    // Compared one by one: std::array's operator!= calls memcmp, about 5% of a 17k-vertex run.
-    const Triangle &cached = corners_[t], &now = mesh_.triangles[t];
-    if (cached[0] != now[0] || cached[1] != now[1] || cached[2] != now[2]) recompute(t);
-  }
 
   // Over all keys: the cosine of triangle t's largest angle in the key where it is largest (the
   // first such key), or 0 when it is not obtuse in any key, or 1 without keys.
@@ -73,6 +68,8 @@ class TriangleShapes {
 
  private:
   void recompute(int t);
+  // Recomputes every triangle whose corners differ from those it was computed for.
+  void syncCorners();
   void resize(size_t count);
   void computeKey(int k, size_t first, size_t end);
   void combineKeys(size_t first, size_t end);

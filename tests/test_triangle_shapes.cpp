@@ -30,8 +30,7 @@ double angleAt(const Eigen::Vector2d& corner, const Eigen::Vector2d& a, const Ei
 }
 
 // Checks every answer for triangle t in key k against angles and lengths computed directly.
-void checkTriangle(const ComeshMesh& mesh, TriangleShapes& shapes, const TriangleShapeBounds& bounds, int t, int k) {
-  shapes.ensure(t);
+void checkTriangle(const ComeshMesh& mesh, const TriangleShapes& shapes, const TriangleShapeBounds& bounds, int t, int k) {
   const Triangle& tri = mesh.triangles[t];
   Eigen::Vector2d p[3];
   for (int i = 0; i < 3; ++i) p[i] = mesh.keys[k].row(tri[i]).transpose();
@@ -56,8 +55,7 @@ void checkTriangle(const ComeshMesh& mesh, TriangleShapes& shapes, const Triangl
 
 // The answers over all keys agree with the per-key ones (checked above against angles and
 // lengths): the first key with the largest angle gives the worst, the masks hold in every key.
-void checkCombined(const ComeshMesh& mesh, TriangleShapes& shapes, int t) {
-  shapes.ensure(t);
+void checkCombined(const ComeshMesh& mesh, const TriangleShapes& shapes, int t) {
   double worst = 1;
   int edge = 0, longEdges = 7, shortEdges = 7, thinEdges = 7;
   for (int k = 0; k < mesh.keyCount(); ++k) {
@@ -77,7 +75,7 @@ void checkCombined(const ComeshMesh& mesh, TriangleShapes& shapes, int t) {
   CHECK(shapes.thinInEveryKey(t) == thinEdges);
 }
 
-void checkAll(const ComeshMesh& mesh, TriangleShapes& shapes, const TriangleShapeBounds& bounds) {
+void checkAll(const ComeshMesh& mesh, const TriangleShapes& shapes, const TriangleShapeBounds& bounds) {
   for (int t = 0; t < static_cast<int>(mesh.triangles.size()); ++t) {
     for (int k = 0; k < mesh.keyCount(); ++k) checkTriangle(mesh, shapes, bounds, t, k);
     checkCombined(mesh, shapes, t);
@@ -120,20 +118,23 @@ TEST_CASE("triangle shapes: a moved key and changed corners are recomputed, othe
   checkAll(mesh, shapes, bounds);
 
   // Rotating a triangle's corners renumbers its edges; a removed slot and a new triangle
-  // appended after the refresh are asked for as well.
+  // appended are recomputed too, with no key moving.
   Triangle& rotated = mesh.triangles[5];
   rotated = {rotated[1], rotated[2], rotated[0]};
   mesh.triangles[6] = {-1, -1, -1};
   mesh.triangles.push_back(mesh.triangles[7]);
   const int appended = static_cast<int>(mesh.triangles.size()) - 1;
+  shapes.refresh();  // reads the removed slot's corners as vertex 0, harmlessly
   for (int k = 0; k < 2; ++k) {
     checkTriangle(mesh, shapes, bounds, 5, k);
     checkTriangle(mesh, shapes, bounds, appended, k);
   }
   checkCombined(mesh, shapes, 5);
   checkCombined(mesh, shapes, appended);
-  shapes.keyMoved(0);
-  shapes.refresh();  // reads the removed slot's corners as vertex 0, harmlessly
+  // Dropping a slot (as compact() does) renumbers every triangle after it; one key moves as well.
   mesh.triangles.erase(mesh.triangles.begin() + 6);
+  mesh.keys[0].col(1) *= 0.7;
+  shapes.keyMoved(0);
+  shapes.refresh();
   checkAll(mesh, shapes, bounds);
 }
