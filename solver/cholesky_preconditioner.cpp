@@ -13,6 +13,8 @@ namespace ib {
 struct CholeskyPreconditioner::Analysis {
   Eigen::SimplicialLLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::MetisOrdering<int>> llt;
   bool analyzed = false;
+  // For factorizeInOrder: the system permuted by the caller's order, factorized as it stands.
+  Eigen::SimplicialLLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::NaturalOrdering<int>> ordered;
 };
 
 CholeskyPreconditioner::CholeskyPreconditioner(int threads)
@@ -30,8 +32,32 @@ void CholeskyPreconditioner::factorize(const Eigen::SparseMatrix<double>& H) {
   }
   llt.factorize(H);
   if (llt.info() != Eigen::Success) throw std::runtime_error("global matrix is not positive definite");
-  const auto& L = llt.matrixL().nestedExpression();
   n_ = static_cast<int>(H.rows());
+  adopt(llt.matrixL().nestedExpression(), first ? llt.permutationP().indices().data() : nullptr);
+}
+
+void CholeskyPreconditioner::factorizeInOrder(const Eigen::SparseMatrix<double>& H, const std::vector<int>& order) {
+  const int n = static_cast<int>(H.rows());
+  if (static_cast<int>(order.size()) != n) throw std::invalid_argument("elimination order does not match the matrix");
+  Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> P(n);
+  P.indices().setConstant(-1);
+  for (int k = 0; k < n; ++k) {
+    if (order[k] < 0 || order[k] >= n || P.indices()[order[k]] >= 0)
+      throw std::invalid_argument("elimination order is not a permutation");
+    P.indices()[order[k]] = k;
+  }
+  Eigen::SparseMatrix<double> permuted(n, n);
+  permuted.selfadjointView<Eigen::Lower>() = H.selfadjointView<Eigen::Lower>().twistedBy(P);  // P H P^T
+  auto& ordered = analysis_->ordered;
+  ordered.analyzePattern(permuted);
+  ordered.factorize(permuted);
+  if (ordered.info() != Eigen::Success) throw std::runtime_error("global matrix is not positive definite");
+  analysis_->analyzed = false;  // a later factorize() orders afresh
+  n_ = n;
+  adopt(ordered.matrixL().nestedExpression(), P.indices().data());
+}
+
+void CholeskyPreconditioner::adopt(const Eigen::SparseMatrix<double>& L, const int* perm) {
   colStart_.assign(L.outerIndexPtr(), L.outerIndexPtr() + n_ + 1);
   colRow_.assign(L.innerIndexPtr(), L.innerIndexPtr() + L.nonZeros());
   colValue_.assign(L.valuePtr(), L.valuePtr() + L.nonZeros());
@@ -43,9 +69,8 @@ void CholeskyPreconditioner::factorize(const Eigen::SparseMatrix<double>& H) {
   // unknown to the next (the solves are latency-bound: rows are short).
   inverseDiagonal_.resize(n_);
   for (int j = 0; j < n_; ++j) inverseDiagonal_[j] = 1.0 / L.valuePtr()[L.outerIndexPtr()[j]];
-  if (first) {
-    const auto& P = llt.permutationP();
-    perm_.assign(P.indices().data(), P.indices().data() + n_);
+  if (perm) {  // a new order, and so a new elimination tree
+    perm_.assign(perm, perm + n_);
     buildSchedule();
   }
   work_.assign(2 * static_cast<size_t>(n_), 0.0);

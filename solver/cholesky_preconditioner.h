@@ -25,6 +25,11 @@ class CholeskyPreconditioner {
   // Factorizes H (n x n, symmetric positive definite; only the lower triangle is read).
   // Throws std::runtime_error if H is not positive definite.
   void factorize(const Eigen::SparseMatrix<double>& H);
+  // The same with the elimination order given (order[k]: the unknown eliminated k-th, a
+  // permutation of 0..n-1) instead of METIS's, and the symbolic analysis redone, so H's pattern
+  // may differ from the last call's. For a caller that rebuilds H often and orders it more
+  // cheaply than METIS (on a 17k-vertex grid METIS takes 71 ms, the factorization 14).
+  void factorizeInOrder(const Eigen::SparseMatrix<double>& H, const std::vector<int>& order);
   bool factorized() const { return n_ > 0; }
 
   // rhs (n x 2) <- H^{-1} rhs.
@@ -36,6 +41,8 @@ class CholeskyPreconditioner {
   long factorNonZeros() const { return static_cast<long>(colValue_.size()); }
 
  private:
+  // Takes the factor L of the permuted system (perm: row i of H is row perm[i] there).
+  void adopt(const Eigen::SparseMatrix<double>& L, const int* perm);
   void buildSchedule();
   // work_ <- b (n x 2), permuted and interleaved.
   void loadWork(const Eigen::MatrixX2d& b) const;

@@ -5,7 +5,8 @@
 // (modes of L below s are left as they are, so a smaller s smooths more). L depends on
 // topology only, so it is shared by every key. Any such L is a valid preconditioner, so after
 // flips alone it is kept for a while (refactorized every `refreshAfter` calls); after splits or
-// collapses, which change the vertex set, it is rebuilt at once.
+// collapses, which change the vertex set, it is rebuilt at once. Every rebuild orders the
+// unknowns anew with approximate minimum degree (AMD), which is cheap, instead of METIS.
 #pragma once
 
 #include "cholesky_preconditioner.h"
@@ -42,7 +43,7 @@ class SobolevPreconditioner {
   std::vector<int> unknown_;  // [vertex]: row in L, or -1 (boundary, fixed, or without triangles)
   std::vector<int> valence_;  // [vertex]
   int threads_;                       // for the solves
-  CholeskyPreconditioner factor_{1};  // of L + s I; analysed anew with every rebuild (the pattern changes)
+  CholeskyPreconditioner factor_{1};  // of L + s I; ordered and analysed anew with every rebuild
   int unknowns_ = 0;                  // rows of L
 };
 
