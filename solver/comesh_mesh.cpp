@@ -182,6 +182,7 @@ void ComeshMesh::compact() {
   for (auto& list : around) list.clear();
   for (size_t t = 0; t < triangles.size(); ++t)
     for (int v : triangles[t]) around[v].push_back(static_cast<int>(t));
+  ++topologyVersion;  // triangles renumbered
 }
 
 Multimesh ComeshMesh::toMultimesh() const {

@@ -82,7 +82,7 @@ struct ComeshMesh {
   std::vector<std::vector<CohesivePair>> cohesive;  // [key]: C_i
   std::vector<std::vector<char>> outline;           // [key][vertex]: in B_i
   std::vector<char> fixed;                    // [vertex]: never moves (all boundary vertices without `boundary`)
-  long topologyVersion = 0;                   // counts flips, splits and collapses
+  long topologyVersion = 0;                   // counts changes of the triangle list: flips, splits, collapses, compact()
   long vertexSetVersion = 0;                  // counts splits and collapses (vertices added or emptied)
 
  private:

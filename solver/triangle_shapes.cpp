@@ -112,7 +112,8 @@ void TriangleShapes::refresh() {
     moved = true;
   }
   if (moved) combineKeys(0, count);
-  syncCorners();
+  if (mesh_.topologyVersion != syncedVersion_) syncCorners();
+  syncedVersion_ = mesh_.topologyVersion;
 }
 
 void TriangleShapes::syncCorners() {

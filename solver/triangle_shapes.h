@@ -39,8 +39,8 @@ class TriangleShapes {
   // Key k's positions moved: it is recomputed for every triangle at the next refresh().
   void keyMoved(int k);
   // Brings the cache to the mesh's triangle count, recomputes the keys that moved and, in every
-  // key, the triangles whose corners changed or that were added. The queries below answer for
-  // the mesh as it was at the last refresh().
+  // key, the triangles whose corners changed or that were added (looked for only when the mesh's
+  // topologyVersion moved). The queries below answer for the mesh as it was at the last refresh().
   void refresh();
 
   // Over all keys: the cosine of triangle t's largest angle in the key where it is largest (the
@@ -85,6 +85,7 @@ class TriangleShapes {
                                                     // worst key's edge, masks and-ed
   std::vector<Triangle> corners_;                   // [triangle]: the corners last computed for
   std::vector<char> stale_;                         // [key]: positions moved since computed
+  long syncedVersion_ = -1;                         // the mesh's topologyVersion at the last syncCorners
 };
 
 }  // namespace ib

@@ -123,6 +123,7 @@ TEST_CASE("triangle shapes: a moved key and changed corners are recomputed, othe
   rotated = {rotated[1], rotated[2], rotated[0]};
   mesh.triangles[6] = {-1, -1, -1};
   mesh.triangles.push_back(mesh.triangles[7]);
+  ++mesh.topologyVersion;  // as ComeshMesh's operations do
   const int appended = static_cast<int>(mesh.triangles.size()) - 1;
   shapes.refresh();  // reads the removed slot's corners as vertex 0, harmlessly
   for (int k = 0; k < 2; ++k) {
@@ -133,6 +134,7 @@ TEST_CASE("triangle shapes: a moved key and changed corners are recomputed, othe
   checkCombined(mesh, shapes, appended);
   // Dropping a slot (as compact() does) renumbers every triangle after it; one key moves as well.
   mesh.triangles.erase(mesh.triangles.begin() + 6);
+  ++mesh.topologyVersion;
   mesh.keys[0].col(1) *= 0.7;
   shapes.keyMoved(0);
   shapes.refresh();
