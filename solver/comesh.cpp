@@ -7,6 +7,7 @@
 #include <Eigen/Dense>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <omp.h>
 
 namespace ib {
@@ -56,8 +57,14 @@ class VertexStepper {
     const Eigen::VectorXd startU = mesh_.u.col(key_);
     if (!(stepSize > 0)) stepSize = 0.1 * meanEdge(start) / largest;
     for (int attempt = 0; attempt < 20; ++attempt) {
-      moveVertices(start, startU, stepSize);
-      const double after = energy_.evaluate(mesh_.keys[key_], nullptr);
+      // The block energy is infinite when a triangle is not positive in key i (or in a
+      // neighbour, which no step can change): it is the positivity check of the interior's joint move.
+      moveTogether(start, startU, stepSize);
+      double after = energy_.evaluate(mesh_.keys[key_], nullptr);
+      if (!(after < std::numeric_limits<double>::infinity())) {
+        moveOneByOne(start, startU, stepSize);
+        after = energy_.evaluate(mesh_.keys[key_], nullptr);
+      }
       if (after < before) {
         stepSize *= 1.5;
         return (before - after) / (objective > 0 && std::isfinite(objective) ? objective : before);
@@ -91,21 +98,29 @@ class VertexStepper {
     return {lo, hi};
   }
 
-  // Every movable vertex goes `stepSize` along its direction, halved until its one-ring stays
-  // positive (and a sliding vertex keeps its gaps and follows the outline). Interior vertices take
-  // the whole step at once first: when every triangle stays positive, the common case, only the
-  // sliding vertices go one by one; else every vertex does, from the start.
-  void moveVertices(const Eigen::MatrixX2d& start, const Eigen::VectorXd& startU, double stepSize) {
+  // Every movable vertex goes `stepSize` along its direction from its start: the interior
+  // vertices all at once, the sliding ones one by one, each halving its slide until it fits (its
+  // one-ring positive, its gaps kept, the outline followed). Usually every triangle stays
+  // positive; the caller checks, and if not, moves the vertices with moveOneByOne instead.
+  void moveTogether(const Eigen::MatrixX2d& start, const Eigen::VectorXd& startU, double stepSize) {
     Eigen::MatrixX2d& x = mesh_.keys[key_];
     x = start;
     mesh_.u.col(key_) = startU;
     const int n = static_cast<int>(x.rows());
     for (int v = 0; v < n; ++v)
       if (slide_[v] == 0) x.row(v) += stepSize * direction_.row(v);  // zero rows for the still ones
-    const bool together = everyTrianglePositive();
-    if (!together) x = start;
     for (int v = 0; v < n; ++v)
-      if ((!together && !direction_.row(v).isZero()) || slide_[v] != 0) moveVertex(v, start, startU, stepSize);
+      if (slide_[v] != 0) moveVertex(v, start, startU, stepSize);
+  }
+
+  // The same with every movable vertex going one by one, each halving its step until its one-ring
+  // stays positive (and, sliding, until it fits as above).
+  void moveOneByOne(const Eigen::MatrixX2d& start, const Eigen::VectorXd& startU, double stepSize) {
+    Eigen::MatrixX2d& x = mesh_.keys[key_];
+    x = start;
+    mesh_.u.col(key_) = startU;
+    for (int v = 0; v < static_cast<int>(x.rows()); ++v)
+      if (!direction_.row(v).isZero() || slide_[v] != 0) moveVertex(v, start, startU, stepSize);
   }
 
   // Vertex v from its start, `stepSize` along its direction, halved until it fits, else back at its start.
@@ -158,12 +173,6 @@ class VertexStepper {
       (placed ? fitting : misses) = middle;
     }
     if (!placed) fits(fitting);
-  }
-
-  bool everyTrianglePositive() const {
-    for (const Triangle& c : mesh_.triangles)
-      if (c[0] >= 0 && !positive(c)) return false;
-    return true;
   }
 
   // Triangle c has positive area in key_.
