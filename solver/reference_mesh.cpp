@@ -2,6 +2,7 @@
 
 #include "error.h"
 #include "plane_geometry.h"
+#include "spatial_order.h"
 
 #include <algorithm>
 #include <map>
@@ -88,6 +89,7 @@ class Builder {
     buildChains();
     mirrorCutSides();
     splitPinnedEdges();
+    orderForLocality();
     return std::move(mesh_);
   }
 
@@ -234,6 +236,32 @@ class Builder {
         }
     }
     throw std::logic_error("reference mesh: no triangle on a boundary edge");
+  }
+
+  // Renumbers the vertices along a Hilbert curve and sorts the triangles by their corners, so that
+  // neighbours sit close together in memory for every later stage (spatial_order.h).
+  void orderForLocality() {
+    const std::vector<int> order = hilbertOrder(mesh_.points);
+    std::vector<int> index(order.size());
+    for (size_t k = 0; k < order.size(); ++k) index[order[k]] = static_cast<int>(k);
+    std::vector<Eigen::Vector2d> points(order.size());
+    std::vector<BoundaryTag> tags(order.size());
+    for (size_t k = 0; k < order.size(); ++k) {
+      points[k] = mesh_.points[order[k]];
+      tags[k] = mesh_.tags[order[k]];
+    }
+    mesh_.points = std::move(points);
+    mesh_.tags = std::move(tags);
+    for (Triangle& t : mesh_.triangles)
+      for (int& v : t) v = index[v];
+    for (auto& chain : mesh_.arcChains)
+      for (int& v : chain) v = index[v];
+    for (int& v : mesh_.arcEnd)
+      if (v >= 0) v = index[v];
+    std::vector<Triangle> triangles;
+    triangles.reserve(mesh_.triangles.size());
+    for (int t : triangleOrder(mesh_.triangles)) triangles.push_back(mesh_.triangles[t]);
+    mesh_.triangles = std::move(triangles);
   }
 
   // Splits interior edges whose two ends are both on the boundary, at their midpoints.
