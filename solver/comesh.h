@@ -27,8 +27,9 @@ struct ComeshOptions {
   double odtBalance = 1;
   bool remesh = true;            // flips, splits and collapses; off: vertex steps only. Default on.
   // Threads for the block energy and the preconditioner's solves on meshes of 4000 vertices or
-  // more; 0 = all cores. Default 1: on the 2-core VM two threads saved 4% at 17k vertices while the
-  // machine was quiet and cost 45% while its other core was busy (threads wait on each other).
+  // more; 0 = all cores. Default 1: on the 2-core VM two threads saved 8% per inner iteration at
+  // 17k vertices while the machine was quiet (2.88 instead of 3.14 ms, 2026-11-22) and cost 45%
+  // while its other core was busy (threads wait on each other).
   int threads = 1;
   RemeshOptions bounds;          // when to split and collapse (comesh_topology.h)
   // Called after each outer iteration with the iterations done so far, for progress display. Optional.
