@@ -1,5 +1,8 @@
 // The objective of Comesh Optimization (paper section 4, eq. 8) and its two parts, with gradients.
 // Positions are n x 2 (any length unit); triangles are positive in every key they are evaluated on.
+// odtEnergy and mipsEnergy are the plain per-triangle forms with their gradients; the optimizer
+// runs on faster forms of the same sums (comeshEnergy's one pass per key, and BlockEnergy in
+// comesh_block_energy.h), which the tests check against these.
 #pragma once
 
 #include "multimesh.h"
