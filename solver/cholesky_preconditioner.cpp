@@ -58,21 +58,43 @@ void CholeskyPreconditioner::factorizeInOrder(const Eigen::SparseMatrix<double>&
 }
 
 void CholeskyPreconditioner::adopt(const Eigen::SparseMatrix<double>& L, const int* perm) {
-  colStart_.assign(L.outerIndexPtr(), L.outerIndexPtr() + n_ + 1);
-  colRow_.assign(L.innerIndexPtr(), L.innerIndexPtr() + L.nonZeros());
-  colValue_.assign(L.valuePtr(), L.valuePtr() + L.nonZeros());
-  const Eigen::SparseMatrix<float, Eigen::RowMajor> rows = L.template cast<float>();
-  rowStart_.assign(rows.outerIndexPtr(), rows.outerIndexPtr() + n_ + 1);
-  rowCol_.assign(rows.innerIndexPtr(), rows.innerIndexPtr() + rows.nonZeros());
-  rowValue_.assign(rows.valuePtr(), rows.valuePtr() + rows.nonZeros());
-  // Multiplying by 1 / L_jj instead of dividing shortens the dependency chain from one
-  // unknown to the next (the solves are latency-bound: rows are short).
-  inverseDiagonal_.resize(n_);
-  for (int j = 0; j < n_; ++j) inverseDiagonal_[j] = 1.0 / L.valuePtr()[L.outerIndexPtr()[j]];
-  if (perm) {  // a new order, and so a new elimination tree
+  const int* start = L.outerIndexPtr();
+  const int* row = L.innerIndexPtr();
+  const double* value = L.valuePtr();
+  const size_t nonZeros = static_cast<size_t>(L.nonZeros());
+  if (perm) {  // a new order, and so a new pattern and elimination tree
+    colStart_.assign(start, start + n_ + 1);
+    colRow_.assign(row, row + nonZeros);
+    // L by rows, by a transposition that remembers where each entry went, so that a refactorization
+    // in the same pattern only copies values.
+    rowStart_.assign(n_ + 1, 0);
+    for (size_t e = 0; e < nonZeros; ++e) ++rowStart_[row[e] + 1];
+    for (int i = 0; i < n_; ++i) rowStart_[i + 1] += rowStart_[i];
+    rowCol_.resize(nonZeros);
+    rowSlot_.resize(nonZeros);
+    std::vector<int> fill(rowStart_.begin(), rowStart_.end() - 1);
+    for (int j = 0; j < n_; ++j)  // columns in order: each row's entries by column, diagonal last
+      for (int e = start[j]; e < start[j + 1]; ++e) {
+        const int at = fill[row[e]]++;
+        rowCol_[at] = j;
+        rowSlot_[e] = at;
+      }
     perm_.assign(perm, perm + n_);
     buildSchedule();
+  } else if (nonZeros != colRow_.size()) {
+    throw std::logic_error("Cholesky factor: the pattern changed without a new analysis");
   }
+  colValue_.resize(nonZeros);
+  rowValue_.resize(nonZeros);
+  for (size_t e = 0; e < nonZeros; ++e) {
+    const float v = static_cast<float>(value[e]);
+    colValue_[e] = v;
+    rowValue_[rowSlot_[e]] = v;
+  }
+  // Multiplying by 1 / L_jj instead of dividing shortens the dependency chain from one
+  // unknown to the next.
+  inverseDiagonal_.resize(n_);
+  for (int j = 0; j < n_; ++j) inverseDiagonal_[j] = 1.0 / value[start[j]];
   work_.assign(2 * static_cast<size_t>(n_), 0.0);
 }
 
@@ -123,32 +145,32 @@ void CholeskyPreconditioner::buildSchedule() {
 
 namespace {
 
-// A pair of doubles in one SIMD register (GCC/Clang vector extension): the x and y columns of
-// one unknown, which the interleaved work vector stores side by side.
-typedef double Pair __attribute__((vector_size(16)));
-
-Pair loadPair(const double* p) {
-  Pair v;
-  __builtin_memcpy(&v, p, sizeof v);
-  return v;
-}
-
-void storePair(double* p, Pair v) { __builtin_memcpy(p, &v, sizeof v); }
-
-// sum_k value[k] * (x[2 index[k]], x[2 index[k] + 1]) with four independent accumulators, so the
-// sum is not serialized on the latency of one chain of additions. One vector multiply-add per
-// entry instead of two scalar ones: 11-14% faster solves at 10k-17k unknowns, same results.
-Pair dotPair(const int* index, const float* value, int count, const double* x) {
-  Pair a0 = {0, 0}, a1 = a0, a2 = a0, a3 = a0;
+// sum_k value[k] * (x[2 index[k]], x[2 index[k] + 1]) with four independent accumulator pairs,
+// so the sum is not serialized on the latency of one chain of additions.
+std::pair<double, double> dotPair(const int* index, const float* value, int count, const double* x) {
+  double a0 = 0, a1 = 0, a2 = 0, a3 = 0, b0 = 0, b1 = 0, b2 = 0, b3 = 0;
   int k = 0;
   for (; k + 4 <= count; k += 4) {
-    a0 += static_cast<double>(value[k]) * loadPair(x + 2 * index[k]);
-    a1 += static_cast<double>(value[k + 1]) * loadPair(x + 2 * index[k + 1]);
-    a2 += static_cast<double>(value[k + 2]) * loadPair(x + 2 * index[k + 2]);
-    a3 += static_cast<double>(value[k + 3]) * loadPair(x + 2 * index[k + 3]);
+    const double l0 = value[k], l1 = value[k + 1], l2 = value[k + 2], l3 = value[k + 3];
+    const double* x0 = x + 2 * index[k];
+    const double* x1 = x + 2 * index[k + 1];
+    const double* x2 = x + 2 * index[k + 2];
+    const double* x3 = x + 2 * index[k + 3];
+    a0 += l0 * x0[0];
+    b0 += l0 * x0[1];
+    a1 += l1 * x1[0];
+    b1 += l1 * x1[1];
+    a2 += l2 * x2[0];
+    b2 += l2 * x2[1];
+    a3 += l3 * x3[0];
+    b3 += l3 * x3[1];
   }
-  for (; k < count; ++k) a0 += static_cast<double>(value[k]) * loadPair(x + 2 * index[k]);
-  return (a0 + a1) + (a2 + a3);
+  for (; k < count; ++k) {
+    const double l = value[k];
+    a0 += l * x[2 * index[k]];
+    b0 += l * x[2 * index[k] + 1];
+  }
+  return {(a0 + a1) + (a2 + a3), (b0 + b1) + (b2 + b3)};
 }
 
 }  // namespace
@@ -189,16 +211,18 @@ void CholeskyPreconditioner::solveWork() const {
   const auto forward = [&](const std::vector<int>& columns) {
     for (int j : columns) {
       const int diag = rowStart_[j + 1] - 1;
-      const Pair sum = dotPair(&rowCol_[rowStart_[j]], &rowValue_[rowStart_[j]], diag - rowStart_[j], x);
-      storePair(x + 2 * j, (loadPair(x + 2 * j) - sum) * inverseDiagonal_[j]);
+      const auto [a, b] = dotPair(&rowCol_[rowStart_[j]], &rowValue_[rowStart_[j]], diag - rowStart_[j], x);
+      x[2 * j] = (x[2 * j] - a) * inverseDiagonal_[j];
+      x[2 * j + 1] = (x[2 * j + 1] - b) * inverseDiagonal_[j];
     }
   };
   // L^T x = y, by columns in reverse: x_j = (y_j - sum_{i>j} L_ij x_i) / L_jj reads ancestors.
   const auto backward = [&](const std::vector<int>& columns) {
     for (auto it = columns.rbegin(); it != columns.rend(); ++it) {
       const int j = *it, first = colStart_[j] + 1;
-      const Pair sum = dotPair(&colRow_[first], &colValue_[first], colStart_[j + 1] - first, x);
-      storePair(x + 2 * j, (loadPair(x + 2 * j) - sum) * inverseDiagonal_[j]);
+      const auto [a, b] = dotPair(&colRow_[first], &colValue_[first], colStart_[j + 1] - first, x);
+      x[2 * j] = (x[2 * j] - a) * inverseDiagonal_[j];
+      x[2 * j + 1] = (x[2 * j + 1] - b) * inverseDiagonal_[j];
     }
   };
   const int parts = static_cast<int>(part_.size());

@@ -41,7 +41,8 @@ class CholeskyPreconditioner {
   long factorNonZeros() const { return static_cast<long>(colValue_.size()); }
 
  private:
-  // Takes the factor L of the permuted system (perm: row i of H is row perm[i] there).
+  // Takes the factor L of the permuted system (perm: row i of H is row perm[i] there; null when
+  // L has the pattern of the last call's).
   void adopt(const Eigen::SparseMatrix<double>& L, const int* perm);
   void buildSchedule();
   // work_ <- b (n x 2), permuted and interleaved.
@@ -58,6 +59,7 @@ class CholeskyPreconditioner {
   std::vector<float> colValue_;
   std::vector<int> rowStart_, rowCol_;    // L by rows (diagonal last), for L y = b
   std::vector<float> rowValue_;
+  std::vector<int> rowSlot_;              // [entry of L by columns]: its index in the row storage
   std::vector<double> inverseDiagonal_;   // 1 / L_jj
   std::vector<std::vector<int>> part_;    // independent subtrees, one list per thread
   std::vector<int> top_;                  // separator columns above them, done serially

@@ -62,16 +62,15 @@ DeformationEnergy::DeformationEnergy(const std::vector<Triangle>& triangles, con
     for (int c = 0; c < 3; ++c) incidence_[fill[3 * triangles_[k][c] + c]++] = k;
 }
 
-std::vector<Eigen::Matrix2d> DeformationEnergy::metrics(const ActiveKeys& keys) const {
-  std::vector<Eigen::Matrix2d> M(triangles_.size(), Eigen::Matrix2d::Zero());
+Eigen::Matrix2d DeformationEnergy::metric(int k, const ActiveKeys& keys) const {
   const int t = triangleCount();
-  for (int k = 0; k < t; ++k)
-    for (size_t a = 0; a < keys.index.size(); ++a) {
-      const double* r = restOf(keys.index[a]);
-      Eigen::Matrix2d B;
-      B << r[k], r[2 * t + k], r[t + k], r[3 * t + k];
-      M[k] += 2.0 * keys.weight[a] * r[4 * t + k] * B * B.transpose();
-    }
+  Eigen::Matrix2d M = Eigen::Matrix2d::Zero();
+  for (size_t a = 0; a < keys.index.size(); ++a) {
+    const double* r = restOf(keys.index[a]);
+    Eigen::Matrix2d B;
+    B << r[k], r[2 * t + k], r[t + k], r[3 * t + k];
+    M += 2.0 * keys.weight[a] * r[4 * t + k] * B * B.transpose();
+  }
   return M;
 }
 

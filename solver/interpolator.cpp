@@ -104,6 +104,7 @@ Interpolator::Interpolator(const Multimesh& mesh, const InterpolationParams& par
       threads_(threadsFor(options.threads, validated(mesh).vertexCount())),
       groups_(mesh.vertexCount(), meshEdges(mesh)),
       factor_(threads_),
+      assembly_(mesh.vertexCount()),
       anderson_(options.andersonDepth, threads_) {
   validateOptions(params, options);
   const std::vector<Triangle> triangles = mesh.triangles();
@@ -125,9 +126,10 @@ Interpolator::Interpolator(const Multimesh& mesh, const InterpolationParams& par
 
   // Mean diagonal of the ARAP matrix at uniform weights: the stiffness scale of one vertex.
   const Eigen::VectorXd uniform = Eigen::VectorXd::Constant(keyCount(), 1.0 / keyCount());
-  const auto M = deformation_->metrics(activeKeys(uniform));
+  const ActiveKeys all = activeKeys(uniform);
   double diagonal = 0;
-  for (const auto& Mt : M) diagonal += Mt.sum();  // sum of E^T M E's diagonal = sum of M's entries
+  for (int t = 0; t < deformation_->triangleCount(); ++t)
+    diagonal += deformation_->metric(t, all).sum();  // sum of E^T M E's diagonal = sum of M's entries
   diagonal /= vertexCount();
   stiffnessScale_ = diagonal;
   gradientFloor_ = 1e-13 * diagonal;
@@ -205,19 +207,18 @@ void Interpolator::align(const Frame& frame, const State& reference, Eigen::Matr
   alignGroups(x, frame.blend, groups_);
 }
 
-Eigen::SparseMatrix<double> Interpolator::globalMatrix(const Frame& frame, const std::vector<char>& active) const {
+const Eigen::SparseMatrix<double>& Interpolator::globalMatrix(const Frame& frame, const std::vector<char>& active) {
   const int n = vertexCount();
   const Eigen::VectorXd& w = frame.w;
-  std::vector<Eigen::Triplet<double>> entries;
   const auto& triangles = deformation_->triangles();
-  const auto M = deformation_->metrics(activeKeys(w));
-  entries.reserve(9 * triangles.size() + 16 * cohesive_->terms().size() + 2 * n);
+  const ActiveKeys keys = activeKeys(w);
+  assembly_.begin();
   Eigen::Matrix<double, 2, 3> E;
   E << -1, 1, 0, -1, 0, 1;
   for (size_t t = 0; t < triangles.size(); ++t) {
-    const Eigen::Matrix3d K = E.transpose() * M[t] * E;
+    const Eigen::Matrix3d K = E.transpose() * deformation_->metric(static_cast<int>(t), keys) * E;
     for (int r = 0; r < 3; ++r)
-      for (int c = 0; c < 3; ++c) entries.emplace_back(triangles[t][r], triangles[t][c], K(r, c));
+      for (int c = 0; c < 3; ++c) assembly_.add(triangles[t][r], triangles[t][c], K(r, c));
   }
   const auto& terms = cohesive_->terms();
   for (size_t j = 0; j < terms.size(); ++j) {
@@ -229,16 +230,14 @@ Eigen::SparseMatrix<double> Interpolator::globalMatrix(const Frame& frame, const
     for (int r = 0; r < 4; ++r)
       for (int c = 0; c < 4; ++c) {
         const double block = (r / 2 == c / 2) ? 2.0 : 1.0;
-        entries.emplace_back(vert[r], vert[c], k * block * sign[r] * sign[c]);
+        assembly_.add(vert[r], vert[c], k * block * sign[r] * sign[c]);
       }
   }
   for (int v = 0; v < n; ++v)
-    entries.emplace_back(v, v, options_.placementStiffness * vertexWeight_ + (frame.springs.size() ? frame.springs(v) : 0.0));
+    assembly_.add(v, v, options_.placementStiffness * vertexWeight_ + (frame.springs.size() ? frame.springs(v) : 0.0));
   if (params_.nonOverlap)
-    for (int v : nonOverlap_->allBoundaryVertices()) entries.emplace_back(v, v, nonOverlap_->stiffness());
-  Eigen::SparseMatrix<double> H(n, n);
-  H.setFromTriplets(entries.begin(), entries.end());
-  return H;
+    for (int v : nonOverlap_->allBoundaryVertices()) assembly_.add(v, v, nonOverlap_->stiffness());
+  return assembly_.matrix();
 }
 
 void Interpolator::refactorize(const Frame& frame, const std::vector<char>& active, InterpolationResult& result) {

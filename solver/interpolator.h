@@ -26,6 +26,7 @@
 #include "cholesky_preconditioner.h"
 #include "cohesive_energy.h"
 #include "deformation_energy.h"
+#include "fixed_pattern.h"
 #include "multimesh.h"
 #include "non_overlap.h"
 #include "placement.h"
@@ -132,7 +133,8 @@ class Interpolator {
   bool springsMatch(const Eigen::VectorXd& springs) const;
   void ensureFactorization(const Frame& frame, const std::vector<char>& active, InterpolationResult& result);
   void refactorize(const Frame& frame, const std::vector<char>& active, InterpolationResult& result);
-  Eigen::SparseMatrix<double> globalMatrix(const Frame& frame, const std::vector<char>& active) const;
+  // H for the frame (n x n, lower triangle), assembled into assembly_.
+  const Eigen::SparseMatrix<double>& globalMatrix(const Frame& frame, const std::vector<char>& active);
 
   InterpolationParams params_;
   SolverOptions options_;
@@ -146,6 +148,7 @@ class Interpolator {
   PlacementGroups groups_;
   std::vector<std::pair<int, int>> groupLinks_;  // the links groups_ was last built from
   CholeskyPreconditioner factor_;
+  FixedPatternAssembly assembly_;          // H's entries, in the same order at every refactorization
   AndersonAcceleration anderson_;          // history kept across frames
   bool factorValid_ = false;               // H factorized for factorWeights_, factorActive_, factorSprings_
   Eigen::VectorXd factorWeights_;
