@@ -51,15 +51,21 @@ TEST_CASE("dynamics: epsilon = 0 frames are the plain interpolation frames, what
   FrameStream plain(f.mesh, t, {}, {}, DynamicsParams{}), forced(f.mesh, t, {}, {}, off);
   const auto a = allFrames(plain), b = allFrames(forced);
   REQUIRE(a.size() == 49);
-  Interpolator cold(f.mesh, {}, {});
+  // A cold start is far from the minimizer, so a cold solve to the usual relative residual (1e-3)
+  // can stop 2e-3 of the size away from it; the stream's warm-started frames stop much closer.
+  // The reference is solved tightly.
+  SolverOptions tight;
+  tight.relativeTolerance = 1e-8;
+  tight.maxIterations = 5000;
+  Interpolator cold(f.mesh, {}, tight);
   for (size_t i = 0; i < a.size(); ++i) {
     INFO("frame " << i);
     CHECK(a[i].x == b[i].x);
     CHECK(b[i].blend == 0);
     CHECK(b[i].x == b[i].plain);
-    // The same inbetween as a cold solve at the frame's weights, within the solver's tolerance.
+    // The same inbetween as a cold solve at the frame's weights (measured: within 1e-4 of the size).
     const Eigen::MatrixX2d x = cold.solve(t.weights(t.frameTime(static_cast<int>(i)))).x;
-    CHECK((x - b[i].x).rowwise().norm().maxCoeff() < 2e-3 * f.size);
+    CHECK((x - b[i].x).rowwise().norm().maxCoeff() < 5e-4 * f.size);
   }
 }
 
