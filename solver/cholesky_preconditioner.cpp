@@ -4,6 +4,7 @@
 #include <Eigen/MetisSupport>
 #include <Eigen/SparseCholesky>
 #include <algorithm>
+#include <cmath>
 #include <omp.h>
 #include <stdexcept>
 #include <utility>
@@ -59,37 +60,23 @@ void CholeskyPreconditioner::factorizeInOrder(const Eigen::SparseMatrix<double>&
 
 void CholeskyPreconditioner::adopt(const Eigen::SparseMatrix<double>& L, const int* perm) {
   const int* start = L.outerIndexPtr();
-  const int* row = L.innerIndexPtr();
   const double* value = L.valuePtr();
-  const size_t nonZeros = static_cast<size_t>(L.nonZeros());
-  if (perm) {  // a new order, and so a new pattern and elimination tree
-    colStart_.assign(start, start + n_ + 1);
-    colRow_.assign(row, row + nonZeros);
-    // L by rows, by a transposition that remembers where each entry went, so that a refactorization
-    // in the same pattern only copies values.
-    rowStart_.assign(n_ + 1, 0);
-    for (size_t e = 0; e < nonZeros; ++e) ++rowStart_[row[e] + 1];
-    for (int i = 0; i < n_; ++i) rowStart_[i + 1] += rowStart_[i];
-    rowCol_.resize(nonZeros);
-    rowSlot_.resize(nonZeros);
-    std::vector<int> fill(rowStart_.begin(), rowStart_.end() - 1);
-    for (int j = 0; j < n_; ++j)  // columns in order: each row's entries by column, diagonal last
-      for (int e = start[j]; e < start[j + 1]; ++e) {
-        const int at = fill[row[e]]++;
-        rowCol_[at] = j;
-        rowSlot_[e] = at;
-      }
+  if (perm) {  // a new order, and so a new elimination tree
     perm_.assign(perm, perm + n_);
-    buildSchedule();
-  } else if (nonZeros != colRow_.size()) {
+    buildSchedule(L);
+  }
+  if (perm || dropTolerance_ > 0) {
+    storePattern(L);
+  } else if (static_cast<size_t>(L.nonZeros()) != source_.size()) {
     throw std::logic_error("Cholesky factor: the pattern changed without a new analysis");
   }
-  colValue_.resize(nonZeros);
-  rowValue_.resize(nonZeros);
-  for (size_t e = 0; e < nonZeros; ++e) {
-    const float v = static_cast<float>(value[e]);
-    colValue_[e] = v;
-    rowValue_[rowSlot_[e]] = v;
+  const size_t kept = source_.size();
+  colValue_.resize(kept);
+  rowValue_.resize(kept);
+  for (size_t k = 0; k < kept; ++k) {
+    const float v = static_cast<float>(value[source_[k]]);
+    colValue_[k] = v;
+    rowValue_[rowSlot_[k]] = v;
   }
   // Multiplying by 1 / L_jj instead of dividing shortens the dependency chain from one
   // unknown to the next.
@@ -98,16 +85,56 @@ void CholeskyPreconditioner::adopt(const Eigen::SparseMatrix<double>& L, const i
   work_.assign(2 * static_cast<size_t>(n_), 0.0);
 }
 
-void CholeskyPreconditioner::buildSchedule() {
+void CholeskyPreconditioner::storePattern(const Eigen::SparseMatrix<double>& L) {
+  const int* start = L.outerIndexPtr();
+  const int* row = L.innerIndexPtr();
+  const double* value = L.valuePtr();
+  // By columns: the diagonal first, then the rows kept.
+  colStart_.assign(n_ + 1, 0);
+  colRow_.clear();
+  source_.clear();
+  for (int j = 0; j < n_; ++j) {
+    const double bound = dropTolerance_ * std::sqrt(value[start[j]]);
+    for (int e = start[j]; e < start[j + 1]; ++e) {
+      const int i = row[e];
+      if (i == j || std::abs(value[e]) >= bound * std::sqrt(value[start[i]])) {
+        colRow_.push_back(i);
+        source_.push_back(e);
+      }
+    }
+    colStart_[j + 1] = static_cast<int>(colRow_.size());
+  }
+  // By rows, through a transposition that remembers where each entry went (rowSlot_), so that a
+  // refactorization in the same pattern only copies values.
+  const size_t kept = colRow_.size();
+  rowStart_.assign(n_ + 1, 0);
+  for (size_t k = 0; k < kept; ++k) ++rowStart_[colRow_[k] + 1];
+  for (int i = 0; i < n_; ++i) rowStart_[i + 1] += rowStart_[i];
+  rowCol_.resize(kept);
+  rowSlot_.resize(kept);
+  std::vector<int> fill(rowStart_.begin(), rowStart_.end() - 1);
+  for (int j = 0; j < n_; ++j)  // columns in order: each row's entries by column, diagonal last
+    for (int k = colStart_[j]; k < colStart_[j + 1]; ++k) {
+      const int at = fill[colRow_[k]]++;
+      rowCol_[at] = j;
+      rowSlot_[k] = at;
+    }
+}
+
+void CholeskyPreconditioner::buildSchedule(const Eigen::SparseMatrix<double>& L) {
+  // From L's full pattern, before any entry is dropped: dropping one removes a dependency between
+  // unknowns, never adds one, so the tree's independent subtrees stay independent.
+  const int* start = L.outerIndexPtr();
+  const int* row = L.innerIndexPtr();
   // Elimination tree: the parent of column j is the first off-diagonal row of L in column j.
   std::vector<int> parent(n_, -1);
   for (int j = 0; j < n_; ++j)
-    if (colStart_[j] + 1 < colStart_[j + 1]) parent[j] = colRow_[colStart_[j] + 1];
+    if (start[j] + 1 < start[j + 1]) parent[j] = row[start[j] + 1];
   std::vector<long> weight(n_, 0);  // nonzeros in each subtree
   std::vector<std::vector<int>> children(n_);
   std::vector<int> roots;
   for (int j = 0; j < n_; ++j) {
-    weight[j] += colStart_[j + 1] - colStart_[j];
+    weight[j] += start[j + 1] - start[j];
     if (parent[j] >= 0) {
       weight[parent[j]] += weight[j];
       children[parent[j]].push_back(j);

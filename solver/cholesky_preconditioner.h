@@ -32,19 +32,27 @@ class CholeskyPreconditioner {
   void factorizeInOrder(const Eigen::SparseMatrix<double>& H, const std::vector<int>& order);
   bool factorized() const { return n_ > 0; }
 
+  // From the next factorization on, the entries with |L_ij| < tolerance sqrt(L_ii L_jj) are
+  // dropped: a sparser, approximate factor (L L^T is still symmetric positive definite), for
+  // callers that need only a preconditioner. Default 0: the exact factor.
+  void setDropTolerance(double tolerance) { dropTolerance_ = tolerance > 0 ? tolerance : 0.0; }
+
   // rhs (n x 2) <- H^{-1} rhs.
   void solve(Eigen::MatrixX2d& rhs) const;
   // out = x - H^{-1} g (all n x 2): the global step, without the copies around solve(). out may
   // not be x or g.
   void step(const Eigen::MatrixX2d& x, const Eigen::MatrixX2d& g, Eigen::MatrixX2d& out) const;
 
+  // Entries of L stored (after dropping).
   long factorNonZeros() const { return static_cast<long>(colValue_.size()); }
 
  private:
   // Takes the factor L of the permuted system (perm: row i of H is row perm[i] there; null when
   // L has the pattern of the last call's).
   void adopt(const Eigen::SparseMatrix<double>& L, const int* perm);
-  void buildSchedule();
+  void buildSchedule(const Eigen::SparseMatrix<double>& L);
+  // The entries of L kept (all, or those above the drop tolerance), by columns and by rows.
+  void storePattern(const Eigen::SparseMatrix<double>& L);
   // work_ <- b (n x 2), permuted and interleaved.
   void loadWork(const Eigen::MatrixX2d& b) const;
   // work_ <- L^-T L^-1 work_ (the permuted system).
@@ -53,13 +61,15 @@ class CholeskyPreconditioner {
   struct Analysis;
   std::unique_ptr<Analysis> analysis_;
   int threads_ = 1;
+  double dropTolerance_ = 0;
   int n_ = 0;
   std::vector<int> perm_;                 // row i of rhs goes to perm_[i] of the permuted system
   std::vector<int> colStart_, colRow_;    // L by columns (diagonal first), for L^T x = y
   std::vector<float> colValue_;
   std::vector<int> rowStart_, rowCol_;    // L by rows (diagonal last), for L y = b
   std::vector<float> rowValue_;
-  std::vector<int> rowSlot_;              // [entry of L by columns]: its index in the row storage
+  std::vector<int> rowSlot_;              // [entry kept, by columns]: its index in the row storage
+  std::vector<int> source_;               // [entry kept, by columns]: its index in L's values
   std::vector<double> inverseDiagonal_;   // 1 / L_jj
   std::vector<std::vector<int>> part_;    // independent subtrees, one list per thread
   std::vector<int> top_;                  // separator columns above them, done serially

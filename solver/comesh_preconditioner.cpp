@@ -42,6 +42,7 @@ void SobolevPreconditioner::update(const ComeshMesh& mesh) {
   // in a run at 17k vertices: 1.1 instead of about 2.4 s in all).
   Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> order;
   Eigen::AMDOrdering<int>()(matrix, order);
+  factor_.setDropTolerance(dropTolerance);
   factor_.factorizeInOrder(matrix, std::vector<int>(order.indices().data(), order.indices().data() + count));
 }
 

@@ -3,6 +3,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <Eigen/OrderingMethods>
 #include <Eigen/Sparse>
 #include <algorithm>
 #include <numeric>
@@ -92,6 +93,33 @@ TEST_CASE("cholesky preconditioner: a refactorization with new values in the sam
     CHECK(relativeResidual(factor, other, b) < 1e-5);
     CHECK(relativeResidual(factor, H, b) > 1e-2);  // it is the new matrix that is solved
   }
+}
+
+TEST_CASE("cholesky preconditioner: dropping small factor entries keeps fewer of them, still solves closely, the same on 1 and 2 threads") {
+  const Eigen::SparseMatrix<double> H = shiftedLaplacian();
+  const int n = static_cast<int>(H.rows());
+  Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> amd;
+  Eigen::AMDOrdering<int>()(H, amd);
+  const std::vector<int> order(amd.indices().data(), amd.indices().data() + n);
+  std::mt19937 random(9);
+  std::uniform_real_distribution<double> value(-1, 1);
+  Eigen::MatrixX2d b(n, 2);
+  for (int i = 0; i < n; ++i) b.row(i) << value(random), value(random);
+  CholeskyPreconditioner exact(1);
+  exact.factorizeInOrder(H, order);
+  Eigen::MatrixX2d solved[2];
+  for (int threads : {1, 2}) {
+    INFO(threads << " threads");
+    CholeskyPreconditioner dropped(threads);
+    dropped.setDropTolerance(1e-3);
+    dropped.factorizeInOrder(H, order);
+    CHECK(dropped.factorNonZeros() < 0.8 * exact.factorNonZeros());
+    CHECK(relativeResidual(dropped, H, b) < 2e-2);
+    CHECK(relativeResidual(dropped, H, b) > 1e-5);  // it is an approximation
+    solved[threads - 1] = b;
+    dropped.solve(solved[threads - 1]);
+  }
+  CHECK(solved[0] == solved[1]);
 }
 
 TEST_CASE("cholesky preconditioner: a given order that is not a permutation of the unknowns is refused") {
