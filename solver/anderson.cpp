@@ -11,6 +11,14 @@
 
 namespace ib {
 
+namespace {
+// Rows per chunk in the combination pass G(x) - dG gamma: 1024 doubles and a float column fit in
+// L1, so the output is not streamed through L2 once per column (at 20k rows and depth 16 a call
+// took 0.16 instead of 0.20 ms on one thread). The Gram pass is not chunked: its sums would be
+// added in another order, and the frames' iteration counts react to that chaotically.
+constexpr Eigen::Index kChunk = 1024;
+}  // namespace
+
 AndersonAcceleration::AndersonAcceleration(int depth, int threads)
     : depth_(std::clamp(depth, 0, kMaxDepth)), threads_(threads < 1 ? 1 : threads) {}
 
@@ -120,15 +128,20 @@ void AndersonAcceleration::next(const Eigen::Ref<const Eigen::VectorXd>& gx,
 #pragma omp parallel num_threads(threads_)
   {
     const auto [first, count] = rowBlock(size);
-    double* o = out.data() + first;
-    const double* gb = gx.data() + first;
+    // In chunks of rows that stay in L1 while every column is subtracted from them (the same
+    // operations in the same order per entry as column by column over all rows).
+    for (Eigen::Index chunk = 0; chunk < count; chunk += kChunk) {
+      const Eigen::Index begin = first + chunk, length = std::min(kChunk, count - chunk);
+      double* o = out.data() + begin;
+      const double* gb = gx.data() + begin;
 #pragma omp simd
-    for (Eigen::Index r = 0; r < count; ++r) o[r] = gb[r];
-    for (int j = 0; j < cols; ++j) {
-      const float* column = dG_.col(j).data() + first;
-      const double gj = gamma(j);
+      for (Eigen::Index r = 0; r < length; ++r) o[r] = gb[r];
+      for (int j = 0; j < cols; ++j) {
+        const float* column = dG_.col(j).data() + begin;
+        const double gj = gamma(j);
 #pragma omp simd
-      for (Eigen::Index r = 0; r < count; ++r) o[r] -= gj * static_cast<double>(column[r]);
+        for (Eigen::Index r = 0; r < length; ++r) o[r] -= gj * static_cast<double>(column[r]);
+      }
     }
   }
 }
