@@ -202,63 +202,61 @@ std::pair<double, double> dotPair(const int* index, const float* value, int coun
 
 }  // namespace
 
-void CholeskyPreconditioner::loadWork(const Eigen::MatrixX2d& b) const {
-  double* x = work_.data();
-  for (int i = 0; i < n_; ++i) {
-    x[2 * perm_[i]] = b(i, 0);
-    x[2 * perm_[i] + 1] = b(i, 1);
-  }
-}
-
-void CholeskyPreconditioner::solve(Eigen::MatrixX2d& rhs) const {
-  const double* x = work_.data();
-  loadWork(rhs);
-  solveWork();
-  for (int i = 0; i < n_; ++i) {
-    rhs(i, 0) = x[2 * perm_[i]];
-    rhs(i, 1) = x[2 * perm_[i] + 1];
-  }
-}
+void CholeskyPreconditioner::solve(Eigen::MatrixX2d& rhs) const { solveWork(rhs, nullptr, rhs); }
 
 void CholeskyPreconditioner::step(const Eigen::MatrixX2d& position, const Eigen::MatrixX2d& g,
                                   Eigen::MatrixX2d& out) const {
-  const double* x = work_.data();
-  loadWork(g);
-  solveWork();
   out.resize(n_, 2);
-  for (int i = 0; i < n_; ++i) {
-    out(i, 0) = position(i, 0) - x[2 * perm_[i]];
-    out(i, 1) = position(i, 1) - x[2 * perm_[i] + 1];
-  }
+  solveWork(g, &position, out);
 }
 
-void CholeskyPreconditioner::solveWork() const {
+void CholeskyPreconditioner::solveWork(const Eigen::MatrixX2d& b, const Eigen::MatrixX2d* position,
+                                       Eigen::MatrixX2d& out) const {
   double* x = work_.data();
   // L y = b, by rows: y_j = (b_j - sum_{k<j} L_jk y_k) / L_jj reads only descendants of j.
   const auto forward = [&](const std::vector<int>& columns) {
     for (int j : columns) {
       const int diag = rowStart_[j + 1] - 1;
-      const auto [a, b] = dotPair(&rowCol_[rowStart_[j]], &rowValue_[rowStart_[j]], diag - rowStart_[j], x);
+      const auto [a, c] = dotPair(&rowCol_[rowStart_[j]], &rowValue_[rowStart_[j]], diag - rowStart_[j], x);
       x[2 * j] = (x[2 * j] - a) * inverseDiagonal_[j];
-      x[2 * j + 1] = (x[2 * j + 1] - b) * inverseDiagonal_[j];
+      x[2 * j + 1] = (x[2 * j + 1] - c) * inverseDiagonal_[j];
     }
   };
   // L^T x = y, by columns in reverse: x_j = (y_j - sum_{i>j} L_ij x_i) / L_jj reads ancestors.
   const auto backward = [&](const std::vector<int>& columns) {
     for (auto it = columns.rbegin(); it != columns.rend(); ++it) {
       const int j = *it, first = colStart_[j] + 1;
-      const auto [a, b] = dotPair(&colRow_[first], &colValue_[first], colStart_[j + 1] - first, x);
+      const auto [a, c] = dotPair(&colRow_[first], &colValue_[first], colStart_[j + 1] - first, x);
       x[2 * j] = (x[2 * j] - a) * inverseDiagonal_[j];
-      x[2 * j + 1] = (x[2 * j + 1] - b) * inverseDiagonal_[j];
+      x[2 * j + 1] = (x[2 * j + 1] - c) * inverseDiagonal_[j];
     }
   };
+  // b goes into the permuted, interleaved system and the result comes out of it on all threads,
+  // in the regions of the subtree solves. Every load comes before the first write, so out may be b.
   const int parts = static_cast<int>(part_.size());
-#pragma omp parallel for schedule(static, 1) num_threads(parts)
-  for (int p = 0; p < parts; ++p) forward(part_[p]);
+#pragma omp parallel num_threads(parts)
+  {
+#pragma omp for schedule(static)
+    for (int i = 0; i < n_; ++i) {
+      x[2 * perm_[i]] = b(i, 0);
+      x[2 * perm_[i] + 1] = b(i, 1);
+    }
+    // The team may have fewer threads than parts.
+    for (int p = omp_get_thread_num(); p < parts; p += omp_get_num_threads()) forward(part_[p]);
+  }
   forward(top_);
   backward(top_);
-#pragma omp parallel for schedule(static, 1) num_threads(parts)
-  for (int p = 0; p < parts; ++p) backward(part_[p]);
+#pragma omp parallel num_threads(parts)
+  {
+    for (int p = omp_get_thread_num(); p < parts; p += omp_get_num_threads()) backward(part_[p]);
+#pragma omp barrier
+#pragma omp for schedule(static)
+    for (int i = 0; i < n_; ++i) {
+      const double* solved = x + 2 * perm_[i];
+      out(i, 0) = position ? (*position)(i, 0) - solved[0] : solved[0];
+      out(i, 1) = position ? (*position)(i, 1) - solved[1] : solved[1];
+    }
+  }
 }
 
 }  // namespace ib

@@ -53,10 +53,8 @@ class CholeskyPreconditioner {
   void buildSchedule(const Eigen::SparseMatrix<double>& L);
   // The entries of L kept (all, or those above the drop tolerance), by columns and by rows.
   void storePattern(const Eigen::SparseMatrix<double>& L);
-  // work_ <- b (n x 2), permuted and interleaved.
-  void loadWork(const Eigen::MatrixX2d& b) const;
-  // work_ <- L^-T L^-1 work_ (the permuted system).
-  void solveWork() const;
+  // out (n x 2) <- H^{-1} b, or position - H^{-1} b when position is given; out may be b.
+  void solveWork(const Eigen::MatrixX2d& b, const Eigen::MatrixX2d* position, Eigen::MatrixX2d& out) const;
 
   struct Analysis;
   std::unique_ptr<Analysis> analysis_;
