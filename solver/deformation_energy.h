@@ -29,9 +29,9 @@ class DeformationEnergy {
   int triangleCount() const { return static_cast<int>(triangles_.size()); }
   const std::vector<Triangle>& triangles() const { return triangles_; }
 
-  // Triangle t's 2x2 metric M_t(w) = 2 sum_i w_i c_ti B_ti B_ti^T, so that with rotations frozen
+  // Triangle k's 2x2 metric M_k(w) = 2 sum_i w_i c_ki B_ki B_ki^T, so that with rotations frozen
   // the Hessian of W_D for one coordinate is sum_t E^T M_t E (E maps corner values to edges).
-  Eigen::Matrix2d metric(int t, const ActiveKeys& keys) const;
+  Eigen::Matrix2d metric(int k, const ActiveKeys& keys) const;
 
   // Local step fused with evaluation: rotations for every triangle and active key, returns W_D
   // and adds dW_D/dx (n x 2) to gradient. Runs in parallel over triangles on `threads` threads.

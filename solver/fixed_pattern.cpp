@@ -9,18 +9,12 @@ namespace ib {
 void FixedPatternAssembly::begin() {
   next_ = 0;
   pending_.clear();
-  if (!recorded_) {  // an earlier first assembly may have stopped part way
-    row_.clear();
-    col_.clear();
-  }
   if (recorded_) std::fill(matrix_.valuePtr(), matrix_.valuePtr() + matrix_.nonZeros(), 0.0);
 }
 
 void FixedPatternAssembly::add(int row, int col, double value) {
   const size_t k = next_++;
   if (!recorded_) {
-    row_.push_back(row);
-    col_.push_back(col);
     pending_.emplace_back(row, col, value);
     return;
   }
@@ -46,10 +40,14 @@ const Eigen::SparseMatrix<double>& FixedPatternAssembly::matrix() {
   matrix_.setFromTriplets(lower.begin(), lower.end());
   matrix_.makeCompressed();
   slot_.assign(pending_.size(), -1);
+  row_.resize(pending_.size());
+  col_.resize(pending_.size());
   const int* start = matrix_.outerIndexPtr();
   const int* rows = matrix_.innerIndexPtr();
   for (size_t k = 0; k < pending_.size(); ++k) {
     const int r = pending_[k].row(), c = pending_[k].col();
+    row_[k] = r;
+    col_[k] = c;
     if (r < c) continue;
     slot_[k] = static_cast<int>(std::lower_bound(rows + start[c], rows + start[c + 1], r) - rows);
   }

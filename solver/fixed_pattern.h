@@ -29,7 +29,7 @@ class FixedPatternAssembly {
  private:
   int n_;
   bool recorded_ = false;                        // the pattern is known
-  std::vector<Eigen::Triplet<double>> pending_;  // first assembly: the entries as given
+  std::vector<Eigen::Triplet<double>> pending_;  // first assembly: the entries as given (begin() drops them)
   std::vector<int> slot_;                        // [entry]: index into the values, -1 above the diagonal
   std::vector<int> row_, col_;                   // [entry]: its position, for the order check
   size_t next_ = 0;                              // entries added since begin()
