@@ -22,6 +22,12 @@ constexpr Eigen::Index kChunk = 1024;
 AndersonAcceleration::AndersonAcceleration(int depth, int threads)
     : depth_(std::clamp(depth, 0, kMaxDepth)), threads_(threads < 1 ? 1 : threads) {}
 
+void AndersonAcceleration::setRowSplit(RowSplit rows, int segments) {
+  rows_ = std::move(rows);
+  segments_ = std::max(1, segments);
+  threads_ = rows_.threads();
+}
+
 void AndersonAcceleration::reset() {
   stored_ = 0;
   newest_ = -1;
@@ -46,56 +52,70 @@ void AndersonAcceleration::next(const Eigen::Ref<const Eigen::VectorXd>& gx,
     reset();
   }
   const bool append = havePrevious_;
+  // Block p (one per thread): rows [first, first + count) of each of `segments` parts of `part`
+  // rows, setRowSplit's, or an even split of the whole vector.
+  const bool split = rows_.size() > 0 && static_cast<Eigen::Index>(rows_.size()) * segments_ == size;
+  const int segments = split ? segments_ : 1;
+  const Eigen::Index part = size / segments;
+  const int blocks = threads_;
+  const auto block = [&](int p) -> std::pair<Eigen::Index, Eigen::Index> {
+    if (!split) return {size * p / blocks, size * (p + 1) / blocks - size * p / blocks};
+    return {rows_.begin(p), rows_.end(p) - rows_.begin(p)};
+  };
   if (append) {
     newest_ = (newest_ + 1) % depth_;
     if (stored_ < depth_) ++stored_;
   }
-  // One pass over row blocks, one block per thread: store the new differences, form the new
+  // One pass over the blocks: store the new differences, form the new
   // Gram row and dF^T f, and remember (f, G(x)) for the next call. Plain loops with explicit
   // simd reductions: the float-to-double products vectorize.
   const int cols = stored_, fresh = newest_;
-  // Per thread: [gram row | dF^T f], added in thread order below (bit-identical every run).
-  std::vector<std::array<double, 2 * kMaxDepth>> partial(static_cast<size_t>(threads_));
-#pragma omp parallel num_threads(threads_)
-  {
-    const auto [first, count] = rowBlock(size);
-    const double* fb = f.data() + first;
-    const double* gb = gx.data() + first;
-    double* pf = previousF_.data() + first;
-    double* pg = previousG_.data() + first;
-    float* newF = dF_.col(std::max(fresh, 0)).data() + first;
-    float* newG = dG_.col(std::max(fresh, 0)).data() + first;
-    if (append) {
+  // Per block: [gram row | dF^T f], added in block order below (bit-identical every run). The
+  // team may have fewer threads than blocks.
+  std::vector<std::array<double, 2 * kMaxDepth>> partial(static_cast<size_t>(blocks));
+#pragma omp parallel num_threads(blocks)
+  for (int p = omp_get_thread_num(); p < blocks; p += omp_get_num_threads()) {
+    double gramRow[kMaxDepth] = {}, projected[kMaxDepth] = {};
+    const auto [firstInPart, count] = block(p);
+    for (int segment = 0; segment < segments; ++segment) {
+      const Eigen::Index first = segment * part + firstInPart;
+      const double* fb = f.data() + first;
+      const double* gb = gx.data() + first;
+      double* pf = previousF_.data() + first;
+      double* pg = previousG_.data() + first;
+      float* newF = dF_.col(std::max(fresh, 0)).data() + first;
+      float* newG = dG_.col(std::max(fresh, 0)).data() + first;
+      if (append) {
+#pragma omp simd
+        for (Eigen::Index r = 0; r < count; ++r) {
+          newF[r] = static_cast<float>(fb[r] - pf[r]);
+          newG[r] = static_cast<float>(gb[r] - pg[r]);
+        }
+      }
+      for (int j = 0; j < cols; ++j) {
+        const float* column = dF_.col(j).data() + first;
+        double projection = 0;
+        if (append) {
+          double gram = 0;
+#pragma omp simd reduction(+ : gram, projection)
+          for (Eigen::Index r = 0; r < count; ++r) {
+            gram += static_cast<double>(column[r]) * newF[r];
+            projection += static_cast<double>(column[r]) * fb[r];
+          }
+          gramRow[j] += gram;
+        } else {
+#pragma omp simd reduction(+ : projection)
+          for (Eigen::Index r = 0; r < count; ++r) projection += static_cast<double>(column[r]) * fb[r];
+        }
+        projected[j] += projection;
+      }
 #pragma omp simd
       for (Eigen::Index r = 0; r < count; ++r) {
-        newF[r] = static_cast<float>(fb[r] - pf[r]);
-        newG[r] = static_cast<float>(gb[r] - pg[r]);
+        pf[r] = fb[r];
+        pg[r] = gb[r];
       }
     }
-    double gramRow[kMaxDepth] = {}, projected[kMaxDepth] = {};
-    for (int j = 0; j < cols; ++j) {
-      const float* column = dF_.col(j).data() + first;
-      double projection = 0;
-      if (append) {
-        double gram = 0;
-#pragma omp simd reduction(+ : gram, projection)
-        for (Eigen::Index r = 0; r < count; ++r) {
-          gram += static_cast<double>(column[r]) * newF[r];
-          projection += static_cast<double>(column[r]) * fb[r];
-        }
-        gramRow[j] = gram;
-      } else {
-#pragma omp simd reduction(+ : projection)
-        for (Eigen::Index r = 0; r < count; ++r) projection += static_cast<double>(column[r]) * fb[r];
-      }
-      projected[j] = projection;
-    }
-#pragma omp simd
-    for (Eigen::Index r = 0; r < count; ++r) {
-      pf[r] = fb[r];
-      pg[r] = gb[r];
-    }
-    auto& mine = partial[static_cast<size_t>(omp_get_thread_num())];
+    auto& mine = partial[static_cast<size_t>(p)];
     for (int j = 0; j < cols; ++j) {
       mine[j] = gramRow[j];
       mine[kMaxDepth + j] = projected[j];
@@ -125,24 +145,25 @@ void AndersonAcceleration::next(const Eigen::Ref<const Eigen::VectorXd>& gx,
     out = gx;
     return;
   }
-#pragma omp parallel num_threads(threads_)
-  {
-    const auto [first, count] = rowBlock(size);
+#pragma omp parallel num_threads(blocks)
+  for (int p = omp_get_thread_num(); p < blocks; p += omp_get_num_threads()) {
+    const auto [firstInPart, count] = block(p);
     // In chunks of rows that stay in L1 while every column is subtracted from them (the same
     // operations in the same order per entry as column by column over all rows).
-    for (Eigen::Index chunk = 0; chunk < count; chunk += kChunk) {
-      const Eigen::Index begin = first + chunk, length = std::min(kChunk, count - chunk);
-      double* o = out.data() + begin;
-      const double* gb = gx.data() + begin;
+    for (int segment = 0; segment < segments; ++segment)
+      for (Eigen::Index chunk = 0; chunk < count; chunk += kChunk) {
+        const Eigen::Index begin = segment * part + firstInPart + chunk, length = std::min(kChunk, count - chunk);
+        double* o = out.data() + begin;
+        const double* gb = gx.data() + begin;
 #pragma omp simd
-      for (Eigen::Index r = 0; r < length; ++r) o[r] = gb[r];
-      for (int j = 0; j < cols; ++j) {
-        const float* column = dG_.col(j).data() + begin;
-        const double gj = gamma(j);
+        for (Eigen::Index r = 0; r < length; ++r) o[r] = gb[r];
+        for (int j = 0; j < cols; ++j) {
+          const float* column = dG_.col(j).data() + begin;
+          const double gj = gamma(j);
 #pragma omp simd
-        for (Eigen::Index r = 0; r < length; ++r) o[r] -= gj * static_cast<double>(column[r]);
+          for (Eigen::Index r = 0; r < length; ++r) o[r] -= gj * static_cast<double>(column[r]);
+        }
       }
-    }
   }
 }
 

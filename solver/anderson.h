@@ -8,6 +8,8 @@
 // history reset.
 #pragma once
 
+#include "thread_block.h"
+
 #include <Eigen/Core>
 
 namespace ib {
@@ -17,6 +19,11 @@ class AndersonAcceleration {
   static constexpr int kMaxDepth = 16;
   // depth: history length, 0..kMaxDepth (0 disables acceleration); threads: for the O(size) passes.
   AndersonAcceleration(int depth, int threads);
+
+  // From now on the vectors are `segments` equal parts stacked (2: the columns of an n x 2
+  // matrix, rows.size() = n), and thread p takes rows [rows.begin(p), rows.end(p)) of every part:
+  // the same vertices as in the caller's own loops. Default: the vector split evenly.
+  void setRowSplit(RowSplit rows, int segments);
 
   void reset();
   // Keeps the stored differences but forgets the last iterate, for a new but similar map
@@ -32,6 +39,8 @@ class AndersonAcceleration {
   // the size of a step whose energy the caller checks, and half the bytes make the passes faster.
   using History = Eigen::MatrixXf;
   int depth_, threads_;
+  RowSplit rows_;    // setRowSplit's split of each segment (empty: even over the whole vector)
+  int segments_ = 1;
   int stored_ = 0, newest_ = -1;
   bool havePrevious_ = false;
   Eigen::VectorXd previousF_, previousG_;

@@ -14,8 +14,9 @@ namespace ib {
 struct CholeskyPreconditioner::Analysis {
   Eigen::SimplicialLLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::MetisOrdering<int>> llt;
   bool analyzed = false;
-  // For factorizeInOrder: the system permuted by the caller's order, factorized as it stands.
+  // For factorizeInOrder and a preordered H: the system factorized as it stands.
   Eigen::SimplicialLLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::NaturalOrdering<int>> ordered;
+  bool preorderedAnalyzed = false;  // `ordered` holds the analysis of the preordered pattern
 };
 
 CholeskyPreconditioner::CholeskyPreconditioner(int threads)
@@ -24,7 +25,28 @@ CholeskyPreconditioner::~CholeskyPreconditioner() = default;
 CholeskyPreconditioner::CholeskyPreconditioner(CholeskyPreconditioner&&) noexcept = default;
 CholeskyPreconditioner& CholeskyPreconditioner::operator=(CholeskyPreconditioner&&) noexcept = default;
 
+void CholeskyPreconditioner::setPreordered(std::vector<int> partStart) {
+  if (static_cast<int>(partStart.size()) != threads_ + 1)
+    throw std::invalid_argument("elimination plan: expected one range per thread");
+  partStart_ = std::move(partStart);
+  analysis_->analyzed = analysis_->preorderedAnalyzed = false;
+}
+
 void CholeskyPreconditioner::factorize(const Eigen::SparseMatrix<double>& H) {
+  if (!partStart_.empty()) {
+    auto& llt = analysis_->ordered;
+    const bool first = !analysis_->preorderedAnalyzed;
+    if (first) {
+      if (H.rows() < partStart_.back()) throw std::invalid_argument("elimination plan: larger than the matrix");
+      llt.analyzePattern(H);
+      analysis_->preorderedAnalyzed = true;
+    }
+    llt.factorize(H);
+    if (llt.info() != Eigen::Success) throw std::runtime_error("global matrix is not positive definite");
+    n_ = static_cast<int>(H.rows());
+    adopt(llt.matrixL().nestedExpression(), nullptr, first);
+    return;
+  }
   auto& llt = analysis_->llt;
   const bool first = !analysis_->analyzed;
   if (first) {
@@ -34,7 +56,7 @@ void CholeskyPreconditioner::factorize(const Eigen::SparseMatrix<double>& H) {
   llt.factorize(H);
   if (llt.info() != Eigen::Success) throw std::runtime_error("global matrix is not positive definite");
   n_ = static_cast<int>(H.rows());
-  adopt(llt.matrixL().nestedExpression(), first ? llt.permutationP().indices().data() : nullptr);
+  adopt(llt.matrixL().nestedExpression(), first ? llt.permutationP().indices().data() : nullptr, first);
 }
 
 void CholeskyPreconditioner::factorizeInOrder(const Eigen::SparseMatrix<double>& H, const std::vector<int>& order) {
@@ -53,19 +75,24 @@ void CholeskyPreconditioner::factorizeInOrder(const Eigen::SparseMatrix<double>&
   ordered.analyzePattern(permuted);
   ordered.factorize(permuted);
   if (ordered.info() != Eigen::Success) throw std::runtime_error("global matrix is not positive definite");
-  analysis_->analyzed = false;  // a later factorize() orders afresh
+  analysis_->analyzed = analysis_->preorderedAnalyzed = false;  // a later factorize() analyzes afresh
   n_ = n;
-  adopt(ordered.matrixL().nestedExpression(), P.indices().data());
+  adopt(ordered.matrixL().nestedExpression(), P.indices().data(), true);
 }
 
-void CholeskyPreconditioner::adopt(const Eigen::SparseMatrix<double>& L, const int* perm) {
+void CholeskyPreconditioner::adopt(const Eigen::SparseMatrix<double>& L, const int* perm, bool fresh) {
   const int* start = L.outerIndexPtr();
   const double* value = L.valuePtr();
-  if (perm) {  // a new order, and so a new elimination tree
-    perm_.assign(perm, perm + n_);
-    buildSchedule(L);
+  if (fresh) {  // a new order, and so a new elimination tree
+    if (perm) {
+      perm_.assign(perm, perm + n_);
+      buildSchedule(L);
+    } else {
+      perm_.clear();
+      rangeSchedule();
+    }
   }
-  if (perm || dropTolerance_ > 0) {
+  if (fresh || dropTolerance_ > 0) {
     storePattern(L);
   } else if (static_cast<size_t>(L.nonZeros()) != source_.size()) {
     throw std::logic_error("Cholesky factor: the pattern changed without a new analysis");
@@ -121,20 +148,22 @@ void CholeskyPreconditioner::storePattern(const Eigen::SparseMatrix<double>& L) 
     }
 }
 
-void CholeskyPreconditioner::buildSchedule(const Eigen::SparseMatrix<double>& L) {
-  // From L's full pattern, before any entry is dropped: dropping one removes a dependency between
-  // unknowns, never adds one, so the tree's independent subtrees stay independent.
-  const int* start = L.outerIndexPtr();
-  const int* row = L.innerIndexPtr();
-  // Elimination tree: the parent of column j is the first off-diagonal row of L in column j.
-  std::vector<int> parent(n_, -1);
-  for (int j = 0; j < n_; ++j)
-    if (start[j] + 1 < start[j + 1]) parent[j] = row[start[j] + 1];
-  std::vector<long> weight(n_, 0);  // nonzeros in each subtree
-  std::vector<std::vector<int>> children(n_);
+namespace {
+
+// Independent subtrees of L's elimination tree, one list of columns per thread, and the top
+// separator above them.
+struct Schedule {
+  std::vector<std::vector<int>> part;  // columns ascending: children before parents
+  std::vector<int> top;                // ascending as well
+};
+
+// parent: the elimination tree (-1 at a root); entries: L's nonzeros in each column.
+Schedule scheduleOf(const std::vector<int>& parent, const std::vector<long>& entries, int threads) {
+  const int n = static_cast<int>(parent.size());
+  std::vector<long> weight = entries;  // nonzeros in each subtree, once the loop has passed it
+  std::vector<std::vector<int>> children(n);
   std::vector<int> roots;
-  for (int j = 0; j < n_; ++j) {
-    weight[j] += start[j + 1] - start[j];
+  for (int j = 0; j < n; ++j) {  // a child comes before its parent
     if (parent[j] >= 0) {
       weight[parent[j]] += weight[j];
       children[parent[j]].push_back(j);
@@ -144,16 +173,28 @@ void CholeskyPreconditioner::buildSchedule(const Eigen::SparseMatrix<double>& L)
   }
   // Walk down from the root while one child carries almost all the work: that chain is the top
   // separator. Below it, subtrees are independent and go to threads by greedy balancing.
+  Schedule schedule;
   std::vector<int> level = roots;
-  top_.clear();
   while (level.size() == 1 && !children[level[0]].empty()) {
-    top_.push_back(level[0]);
+    schedule.top.push_back(level[0]);
     level = children[level[0]];
   }
-  std::sort(level.begin(), level.end(), [&](int a, int b) { return weight[a] > weight[b]; });
-  part_.assign(threads_, {});
-  std::vector<long> load(threads_, 0);
-  std::vector<int> owner(n_, -1), stack;
+  // With fewer subtrees than threads, the heaviest subtree's root joins the top as well, and its
+  // children the level, until every thread can have one.
+  while (static_cast<int>(level.size()) < threads) {
+    auto heaviest = level.end();
+    for (auto it = level.begin(); it != level.end(); ++it)
+      if (!children[*it].empty() && (heaviest == level.end() || weight[*it] > weight[*heaviest])) heaviest = it;
+    if (heaviest == level.end()) break;
+    const int root = *heaviest;
+    level.erase(heaviest);
+    schedule.top.push_back(root);
+    level.insert(level.end(), children[root].begin(), children[root].end());
+  }
+  std::stable_sort(level.begin(), level.end(), [&](int a, int b) { return weight[a] > weight[b]; });
+  schedule.part.assign(threads, {});
+  std::vector<long> load(threads, 0);
+  std::vector<int> owner(n, -1), stack;
   for (int root : level) {
     const int t = static_cast<int>(std::min_element(load.begin(), load.end()) - load.begin());
     load[t] += weight[root];
@@ -165,9 +206,71 @@ void CholeskyPreconditioner::buildSchedule(const Eigen::SparseMatrix<double>& L)
       for (int c : children[v]) stack.push_back(c);
     }
   }
-  for (int j = 0; j < n_; ++j)
-    if (owner[j] >= 0) part_[owner[j]].push_back(j);  // ascending: children before parents
-  std::reverse(top_.begin(), top_.end());             // ascending as well
+  for (int j = 0; j < n; ++j)
+    if (owner[j] >= 0) schedule.part[owner[j]].push_back(j);
+  std::sort(schedule.top.begin(), schedule.top.end());  // a parent comes after its children
+  return schedule;
+}
+
+// The symbolic analysis alone (METIS order, elimination tree, column counts), without the
+// numeric factorization: Eigen keeps the tree and counts in protected members.
+class SymbolicAnalysis
+    : public Eigen::SimplicialLLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::MetisOrdering<int>> {
+ public:
+  explicit SymbolicAnalysis(const Eigen::SparseMatrix<double>& H) { analyzePattern(H); }
+  std::vector<int> parent() const { return {m_parent.data(), m_parent.data() + m_parent.size()}; }
+  // Nonzeros of each column of L, the diagonal included.
+  std::vector<long> entries() const {
+    std::vector<long> count(m_nonZerosPerCol.data(), m_nonZerosPerCol.data() + m_nonZerosPerCol.size());
+    for (long& c : count) ++c;
+    return count;
+  }
+};
+
+}  // namespace
+
+EliminationPlan planElimination(const Eigen::SparseMatrix<double>& H, int threads) {
+  const SymbolicAnalysis analysis(H);
+  if (analysis.info() != Eigen::Success) throw std::runtime_error("elimination plan: the pattern cannot be analyzed");
+  const int n = static_cast<int>(H.rows());
+  const int* perm = analysis.permutationP().indices().data();  // row i of H is row perm[i] of L's system
+  std::vector<int> unknownAt(n);
+  for (int i = 0; i < n; ++i) unknownAt[perm[i]] = i;
+  // A topological order of the same elimination tree, so the factor has the same fill.
+  const Schedule schedule = scheduleOf(analysis.parent(), analysis.entries(), std::max(1, threads));
+  EliminationPlan plan;
+  plan.partStart.push_back(0);
+  for (const auto& part : schedule.part) {
+    for (int j : part) plan.order.push_back(unknownAt[j]);
+    plan.partStart.push_back(static_cast<int>(plan.order.size()));
+  }
+  for (int j : schedule.top) plan.order.push_back(unknownAt[j]);
+  return plan;
+}
+
+void CholeskyPreconditioner::buildSchedule(const Eigen::SparseMatrix<double>& L) {
+  // From L's full pattern, before any entry is dropped: dropping one removes a dependency between
+  // unknowns, never adds one, so the tree's independent subtrees stay independent.
+  const int* start = L.outerIndexPtr();
+  const int* row = L.innerIndexPtr();
+  // Elimination tree: the parent of column j is the first off-diagonal row of L in column j.
+  std::vector<int> parent(n_, -1);
+  std::vector<long> entries(n_);
+  for (int j = 0; j < n_; ++j) {
+    if (start[j] + 1 < start[j + 1]) parent[j] = row[start[j] + 1];
+    entries[j] = start[j + 1] - start[j];
+  }
+  Schedule schedule = scheduleOf(parent, entries, threads_);
+  part_ = std::move(schedule.part);
+  top_ = std::move(schedule.top);
+}
+
+void CholeskyPreconditioner::rangeSchedule() {
+  part_.assign(threads_, {});
+  for (int p = 0; p < threads_; ++p)
+    for (int j = partStart_[p]; j < partStart_[p + 1]; ++j) part_[p].push_back(j);
+  top_.clear();
+  for (int j = partStart_.back(); j < n_; ++j) top_.push_back(j);
 }
 
 namespace {
@@ -210,27 +313,33 @@ void CholeskyPreconditioner::step(const Eigen::MatrixX2d& position, const Eigen:
   solveWork(g, &position, out);
 }
 
+void CholeskyPreconditioner::forward(const std::vector<int>& columns, double* x) const {
+  // L y = b, by rows: y_j = (b_j - sum_{k<j} L_jk y_k) / L_jj reads only descendants of j.
+  for (int j : columns) {
+    const int diag = rowStart_[j + 1] - 1;
+    const auto [a, c] = dotPair(&rowCol_[rowStart_[j]], &rowValue_[rowStart_[j]], diag - rowStart_[j], x);
+    x[2 * j] = (x[2 * j] - a) * inverseDiagonal_[j];
+    x[2 * j + 1] = (x[2 * j + 1] - c) * inverseDiagonal_[j];
+  }
+}
+
+void CholeskyPreconditioner::backward(const std::vector<int>& columns, double* x) const {
+  // L^T x = y, by columns in reverse: x_j = (y_j - sum_{i>j} L_ij x_i) / L_jj reads ancestors.
+  for (auto it = columns.rbegin(); it != columns.rend(); ++it) {
+    const int j = *it, first = colStart_[j] + 1;
+    const auto [a, c] = dotPair(&colRow_[first], &colValue_[first], colStart_[j + 1] - first, x);
+    x[2 * j] = (x[2 * j] - a) * inverseDiagonal_[j];
+    x[2 * j + 1] = (x[2 * j + 1] - c) * inverseDiagonal_[j];
+  }
+}
+
 void CholeskyPreconditioner::solveWork(const Eigen::MatrixX2d& b, const Eigen::MatrixX2d* position,
                                        Eigen::MatrixX2d& out) const {
+  if (perm_.empty()) {
+    solvePreordered(b, position, out);
+    return;
+  }
   double* x = work_.data();
-  // L y = b, by rows: y_j = (b_j - sum_{k<j} L_jk y_k) / L_jj reads only descendants of j.
-  const auto forward = [&](const std::vector<int>& columns) {
-    for (int j : columns) {
-      const int diag = rowStart_[j + 1] - 1;
-      const auto [a, c] = dotPair(&rowCol_[rowStart_[j]], &rowValue_[rowStart_[j]], diag - rowStart_[j], x);
-      x[2 * j] = (x[2 * j] - a) * inverseDiagonal_[j];
-      x[2 * j + 1] = (x[2 * j + 1] - c) * inverseDiagonal_[j];
-    }
-  };
-  // L^T x = y, by columns in reverse: x_j = (y_j - sum_{i>j} L_ij x_i) / L_jj reads ancestors.
-  const auto backward = [&](const std::vector<int>& columns) {
-    for (auto it = columns.rbegin(); it != columns.rend(); ++it) {
-      const int j = *it, first = colStart_[j] + 1;
-      const auto [a, c] = dotPair(&colRow_[first], &colValue_[first], colStart_[j + 1] - first, x);
-      x[2 * j] = (x[2 * j] - a) * inverseDiagonal_[j];
-      x[2 * j + 1] = (x[2 * j + 1] - c) * inverseDiagonal_[j];
-    }
-  };
   // b goes into the permuted, interleaved system and the result comes out of it on all threads,
   // in the regions of the subtree solves. Every load comes before the first write, so out may be b.
   const int parts = static_cast<int>(part_.size());
@@ -242,13 +351,13 @@ void CholeskyPreconditioner::solveWork(const Eigen::MatrixX2d& b, const Eigen::M
       x[2 * perm_[i] + 1] = b(i, 1);
     }
     // The team may have fewer threads than parts.
-    for (int p = omp_get_thread_num(); p < parts; p += omp_get_num_threads()) forward(part_[p]);
+    for (int p = omp_get_thread_num(); p < parts; p += omp_get_num_threads()) forward(part_[p], x);
   }
-  forward(top_);
-  backward(top_);
+  forward(top_, x);
+  backward(top_, x);
 #pragma omp parallel num_threads(parts)
   {
-    for (int p = omp_get_thread_num(); p < parts; p += omp_get_num_threads()) backward(part_[p]);
+    for (int p = omp_get_thread_num(); p < parts; p += omp_get_num_threads()) backward(part_[p], x);
 #pragma omp barrier
 #pragma omp for schedule(static)
     for (int i = 0; i < n_; ++i) {
@@ -256,6 +365,42 @@ void CholeskyPreconditioner::solveWork(const Eigen::MatrixX2d& b, const Eigen::M
       out(i, 0) = position ? (*position)(i, 0) - solved[0] : solved[0];
       out(i, 1) = position ? (*position)(i, 1) - solved[1] : solved[1];
     }
+  }
+}
+
+void CholeskyPreconditioner::solvePreordered(const Eigen::MatrixX2d& b, const Eigen::MatrixX2d* position,
+                                             Eigen::MatrixX2d& out) const {
+  double* x = work_.data();
+  // Rows [first, last) of b into the interleaved system, or of the result out of it.
+  const auto load = [&](int first, int last) {
+    for (int i = first; i < last; ++i) {
+      x[2 * i] = b(i, 0);
+      x[2 * i + 1] = b(i, 1);
+    }
+  };
+  const auto store = [&](int first, int last) {
+    for (int i = first; i < last; ++i) {
+      out(i, 0) = position ? (*position)(i, 0) - x[2 * i] : x[2 * i];
+      out(i, 1) = position ? (*position)(i, 1) - x[2 * i + 1] : x[2 * i + 1];
+    }
+  };
+  // A part's rows are all its solves read and write: no barrier inside the regions, and each
+  // thread touches only the rows it owns. Every load of b comes before the first store, so out
+  // may be b.
+  const int parts = static_cast<int>(part_.size());
+#pragma omp parallel num_threads(parts)
+  for (int p = omp_get_thread_num(); p < parts; p += omp_get_num_threads()) {
+    load(partStart_[p], partStart_[p + 1]);
+    forward(part_[p], x);
+  }
+  load(partStart_.back(), n_);
+  forward(top_, x);
+  backward(top_, x);
+  store(partStart_.back(), n_);
+#pragma omp parallel num_threads(parts)
+  for (int p = omp_get_thread_num(); p < parts; p += omp_get_num_threads()) {
+    backward(part_[p], x);
+    store(partStart_[p], partStart_[p + 1]);
   }
 }
 

@@ -15,6 +15,20 @@
 
 namespace ib {
 
+// An elimination order in which each thread's independent subtrees are contiguous. A caller that
+// numbers its unknowns in this order gets solves without permutations, and each thread's share
+// of the unknowns is one range of rows, which it can keep in all its other loops too.
+struct EliminationPlan {
+  std::vector<int> order;      // order[k]: the unknown eliminated k-th (a permutation of 0..n-1)
+  std::vector<int> partStart;  // threads + 1 entries: thread p's subtrees are positions
+                               // [partStart[p], partStart[p + 1]) of the order; the top
+                               // separator, solved serially, is [partStart.back(), n)
+};
+
+// METIS nested dissection of H's pattern (n x n, symmetric positive definite, lower triangle
+// read; only the pattern matters), split among `threads` as the solves split it.
+EliminationPlan planElimination(const Eigen::SparseMatrix<double>& H, int threads);
+
 class CholeskyPreconditioner {
  public:
   explicit CholeskyPreconditioner(int threads);
@@ -32,6 +46,12 @@ class CholeskyPreconditioner {
   void factorizeInOrder(const Eigen::SparseMatrix<double>& H, const std::vector<int>& order);
   bool factorized() const { return n_ > 0; }
 
+  // From the next factorize() on, H arrives already in the order of an EliminationPlan with
+  // these partStart (one entry more than threads): it is factorized as it stands, without METIS,
+  // and the solves need no permutation; thread p solves positions [partStart[p], partStart[p+1])
+  // and moves only those rows of the right-hand side in and of the result out. Default: unset.
+  void setPreordered(std::vector<int> partStart);
+
   // From the next factorization on, the entries with |L_ij| < tolerance sqrt(L_ii L_jj) are
   // dropped: a sparser, approximate factor (L L^T is still symmetric positive definite), for
   // callers that need only a preconditioner. Default 0: the exact factor.
@@ -47,20 +67,29 @@ class CholeskyPreconditioner {
   long factorNonZeros() const { return static_cast<long>(colValue_.size()); }
 
  private:
-  // Takes the factor L of the permuted system (perm: row i of H is row perm[i] there; null when
-  // L has the pattern of the last call's).
-  void adopt(const Eigen::SparseMatrix<double>& L, const int* perm);
+  // Takes the factor L of the permuted system (perm: row i of H is row perm[i] there; null for
+  // none). fresh: L comes from a new analysis (else it has the pattern of the last call's).
+  void adopt(const Eigen::SparseMatrix<double>& L, const int* perm, bool fresh);
   void buildSchedule(const Eigen::SparseMatrix<double>& L);
+  // The parts and top separator of setPreordered's ranges.
+  void rangeSchedule();
   // The entries of L kept (all, or those above the drop tolerance), by columns and by rows.
   void storePattern(const Eigen::SparseMatrix<double>& L);
   // out (n x 2) <- H^{-1} b, or position - H^{-1} b when position is given; out may be b.
   void solveWork(const Eigen::MatrixX2d& b, const Eigen::MatrixX2d* position, Eigen::MatrixX2d& out) const;
+  // L y = b (forward) and L^T x = y (backward) over the given columns, in place in x (2n,
+  // interleaved).
+  void forward(const std::vector<int>& columns, double* x) const;
+  void backward(const std::vector<int>& columns, double* x) const;
+  // solveWork for a preordered H.
+  void solvePreordered(const Eigen::MatrixX2d& b, const Eigen::MatrixX2d* position, Eigen::MatrixX2d& out) const;
 
   struct Analysis;
   std::unique_ptr<Analysis> analysis_;
   int threads_ = 1;
   double dropTolerance_ = 0;
   int n_ = 0;
+  std::vector<int> partStart_;            // setPreordered's ranges (empty: not preordered)
   std::vector<int> perm_;                 // row i of rhs goes to perm_[i] of the permuted system
   std::vector<int> colStart_, colRow_;    // L by columns (diagonal first), for L^T x = y
   std::vector<float> colValue_;

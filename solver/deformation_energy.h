@@ -5,6 +5,7 @@
 #pragma once
 
 #include "multimesh.h"
+#include "thread_block.h"
 
 #include <Eigen/Core>
 #include <array>
@@ -34,9 +35,12 @@ class DeformationEnergy {
   Eigen::Matrix2d metric(int k, const ActiveKeys& keys) const;
 
   // Local step fused with evaluation: rotations for every triangle and active key, returns W_D
-  // and adds dW_D/dx (n x 2) to gradient. Runs in parallel over triangles on `threads` threads.
-  // Uses an internal scratch buffer: one evaluate() at a time per object.
-  double evaluate(const Eigen::MatrixX2d& x, const ActiveKeys& keys, Eigen::MatrixX2d& gradient, int threads) const;
+  // and adds dW_D/dx (n x 2) to gradient. Thread p takes the triangles [triangles.begin(p),
+  // triangles.end(p)) and sums the gradient of the vertices [vertices.begin(p), vertices.end(p))
+  // (both splits with the same thread count; std::invalid_argument if they do not match the
+  // mesh). Uses an internal scratch buffer: one evaluate() at a time per object.
+  double evaluate(const Eigen::MatrixX2d& x, const ActiveKeys& keys, Eigen::MatrixX2d& gradient,
+                  const RowSplit& vertices, const RowSplit& triangles) const;
 
  private:
   std::vector<Triangle> triangles_;

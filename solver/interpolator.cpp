@@ -2,8 +2,10 @@
 
 #include "error.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <numeric>
 #include <omp.h>
 #include <stdexcept>
 
@@ -26,7 +28,7 @@ void require(bool ok, const std::string& field, const std::string& rule) {
   if (!ok) throw InputError("solver option " + field + ": " + rule);
 }
 
-void validateOptions(const InterpolationParams& p, const SolverOptions& o) {
+const SolverOptions& validOptions(const InterpolationParams& p, const SolverOptions& o) {
   const CohesiveParams& c = p.cohesive;
   require(std::isfinite(c.lambda) && c.lambda >= 0, "lambda", "must be a finite number >= 0");
   require(c.tau > 0 && !std::isnan(c.tau), "tau", "must be > 0 (infinity: pairs never separate)");
@@ -39,6 +41,7 @@ void validateOptions(const InterpolationParams& p, const SolverOptions& o) {
   require(o.placementStiffness > 0 && std::isfinite(o.placementStiffness), "placementStiffness", "must be > 0");
   require(o.nonOverlapStiffness > 0 && std::isfinite(o.nonOverlapStiffness), "nonOverlapStiffness", "must be > 0");
   require(o.threads >= 0, "threads", "must be >= 0 (0 = all cores)");
+  return o;
 }
 
 // E_S = 1/2 sum_v c_v |x_v - y_v|^2, its gradient added to g. Summed serially: bit-identical
@@ -54,8 +57,6 @@ double springEnergyOf(const Eigen::VectorXd& c, const Eigen::MatrixX2d& target, 
   }
   return 0.5 * energy;
 }
-
-double infinityNorm(const Eigen::MatrixX2d& g) { return g.size() ? g.cwiseAbs().maxCoeff() : 0.0; }
 
 Eigen::Map<const Eigen::VectorXd> flat(const Eigen::MatrixX2d& x) { return {x.data(), x.size()}; }
 Eigen::Map<Eigen::VectorXd> flatMutable(Eigen::MatrixX2d& x) { return {x.data(), x.size()}; }
@@ -81,6 +82,22 @@ void validateWeights(const Eigen::VectorXd& w, int keyCount) {
     throw InputError("weights: sum to " + std::to_string(w.sum()) + ", must sum to 1");
 }
 
+double Interpolator::gradientNorm(const Eigen::MatrixX2d& g) const {
+  const int blocks = vertexSplit_.threads();
+  std::vector<double> partial(static_cast<size_t>(blocks), 0.0);
+  const double* gx = g.col(0).data();
+  const double* gy = g.col(1).data();
+#pragma omp parallel num_threads(blocks)
+  for (int p = omp_get_thread_num(); p < blocks; p += omp_get_num_threads()) {
+    double largest = 0;
+#pragma omp simd reduction(max : largest)
+    for (int v = vertexSplit_.begin(p); v < vertexSplit_.end(p); ++v)
+      largest = std::max(largest, std::max(std::abs(gx[v]), std::abs(gy[v])));
+    partial[p] = largest;
+  }
+  return *std::max_element(partial.begin(), partial.end());
+}
+
 struct Interpolator::Frame {
   Eigen::VectorXd w;
   Eigen::VectorXd springs;         // c_v (empty: no springs)
@@ -99,15 +116,24 @@ struct Interpolator::State {
 };
 
 Interpolator::Interpolator(const Multimesh& mesh, const InterpolationParams& params, const SolverOptions& options)
+    : Interpolator(threadLayout(validated(mesh), threadsFor(validOptions(params, options).threads, mesh.vertexCount())),
+                   params, options) {}
+
+Interpolator::Interpolator(ThreadLayout layout, const InterpolationParams& params, const SolverOptions& options)
     : params_(params),
       options_(options),
-      threads_(threadsFor(options.threads, validated(mesh).vertexCount())),
-      groups_(mesh.vertexCount(), meshEdges(mesh)),
+      threads_(layout.vertices.threads()),
+      originalOf_(std::move(layout.originalOf)),
+      vertexSplit_(std::move(layout.vertices)),
+      triangleSplit_(std::move(layout.triangleSplit)),
+      groups_(layout.mesh.vertexCount(), meshEdges(layout.mesh)),
       factor_(threads_),
-      assembly_(mesh.vertexCount()),
+      assembly_(layout.mesh.vertexCount()),
       anderson_(options.andersonDepth, threads_) {
-  validateOptions(params, options);
-  const std::vector<Triangle> triangles = mesh.triangles();
+  const Multimesh& mesh = layout.mesh;
+  factor_.setPreordered(layout.partStart);
+  anderson_.setRowSplit(vertexSplit_, 2);  // the x and y columns of an n x 2 matrix
+  const std::vector<Triangle>& triangles = layout.triangles;
   double meanArea = 0;
   for (int i = 0; i < mesh.keyCount(); ++i) {
     keys_.push_back(mesh.keyPositions(i));
@@ -116,7 +142,7 @@ Interpolator::Interpolator(const Multimesh& mesh, const InterpolationParams& par
   }
   scale_ = std::sqrt(meanArea);
   for (auto& X : keys_) X /= scale_;
-  deformation_ = std::make_unique<DeformationEnergy>(triangles, keys_, mesh.stiffnesses());
+  deformation_ = std::make_unique<DeformationEnergy>(triangles, keys_, layout.kappa);
   // The same weight for every vertex (the normalized area, 1, shared out): it must not change
   // from frame to frame, or the rigid part of the carried Anderson history goes stale (measured:
   // about 15% more iterations with area weights blended by w), and it must not depend on keys
@@ -147,8 +173,9 @@ Interpolator::Frame Interpolator::makeFrame(const Eigen::VectorXd& w, const Vert
     if (!springs->target.allFinite() || !springs->stiffness.allFinite() || springs->stiffness.minCoeff() < 0)
       throw InputError("vertex springs: stiffnesses must be finite and >= 0, targets finite");
     if (springs->stiffness.maxCoeff() > 0) {
-      f.springs = springs->stiffness;
-      f.springTarget = springs->target / scale_;
+      f.springs.resize(n);
+      for (int k = 0; k < n; ++k) f.springs(k) = springs->stiffness(originalOf_[k]);
+      f.springTarget = toLayout(springs->target, originalOf_) / scale_;
     }
   }
   f.keys = activeKeys(w);
@@ -161,25 +188,33 @@ Interpolator::Frame Interpolator::makeFrame(const Eigen::VectorXd& w, const Vert
 void Interpolator::evaluateState(const Frame& frame, State& s) const {
   const int n = vertexCount();
   s.gradient.resize(n, 2);
-  // E_P first: it also initializes the gradient.
+  // E_P first: it also initializes the gradient. Each thread sums its own vertices; the sums
+  // are added in block order (an OpenMP reduction would add them in arrival order, and frames
+  // must be bit-identical from run to run).
   const double tie = options_.placementStiffness * vertexWeight_;  // mu m_v
-  // One thread (vectorized): an OpenMP reduction over threads would add their sums in arrival
-  // order, and frames must be bit-identical from run to run.
-  double placement = 0;
   const double *x = s.x.col(0).data(), *y = s.x.col(1).data();
   const double *bx = frame.blend.col(0).data(), *by = frame.blend.col(1).data();
   double *gx = s.gradient.col(0).data(), *gy = s.gradient.col(1).data();
-#pragma omp simd reduction(+ : placement)
-  for (int v = 0; v < n; ++v) {
-    const double dx = x[v] - bx[v], dy = y[v] - by[v];
-    placement += dx * dx + dy * dy;
-    gx[v] = tie * dx;
-    gy[v] = tie * dy;
+  const int blocks = vertexSplit_.threads();
+  std::vector<double> partial(static_cast<size_t>(blocks), 0.0);
+#pragma omp parallel num_threads(blocks)
+  for (int p = omp_get_thread_num(); p < blocks; p += omp_get_num_threads()) {
+    double sum = 0;
+#pragma omp simd reduction(+ : sum)
+    for (int v = vertexSplit_.begin(p); v < vertexSplit_.end(p); ++v) {
+      const double dx = x[v] - bx[v], dy = y[v] - by[v];
+      sum += dx * dx + dy * dy;
+      gx[v] = tie * dx;
+      gy[v] = tie * dy;
+    }
+    partial[p] = sum;
   }
+  double placement = 0;
+  for (double part : partial) placement += part;
   s.placement = 0.5 * tie * placement;
   s.energy = s.placement;
   if (frame.springs.size()) s.energy += springEnergyOf(frame.springs, frame.springTarget, s.x, s.gradient);
-  s.energy += deformation_->evaluate(s.x, frame.keys, s.gradient, threads_);
+  s.energy += deformation_->evaluate(s.x, frame.keys, s.gradient, vertexSplit_, triangleSplit_);
   s.energy += cohesive_->evaluate(s.x, frame.w, s.gradient, s.active);
   s.contacts.clear();
   if (params_.nonOverlap) s.energy += nonOverlap_->evaluate(s.x, frame.participants, s.gradient, s.contacts);
@@ -204,7 +239,7 @@ void Interpolator::align(const Frame& frame, const State& reference, Eigen::Matr
     groups_.update(links);
     groupLinks_ = std::move(links);
   }
-  alignGroups(x, frame.blend, groups_);
+  alignGroups(x, frame.blend, groups_, vertexSplit_);
 }
 
 const Eigen::SparseMatrix<double>& Interpolator::globalMatrix(const Frame& frame, const std::vector<char>& active) {
@@ -279,13 +314,14 @@ EnergyEvaluation Interpolator::evaluate(const Eigen::MatrixX2d& x, const Eigen::
   if (x.rows() != vertexCount()) throw InputError("positions: expected " + std::to_string(vertexCount()) + " rows");
   const Frame frame = makeFrame(w, nullptr);
   State s;
-  s.x = x / scale_;
+  s.x = toLayout(x, originalOf_) / scale_;
   evaluateState(frame, s);
-  return {s.energy, s.gradient / scale_};
+  return {s.energy, fromLayout(s.gradient, originalOf_) / scale_};
 }
 
 int Interpolator::countOverlaps(const Eigen::MatrixX2d& x, const Eigen::VectorXd& w) const {
-  return nonOverlap_->countInside(x / scale_, makeFrame(w, nullptr).participants);
+  if (x.rows() != vertexCount()) throw InputError("positions: expected " + std::to_string(vertexCount()) + " rows");
+  return nonOverlap_->countInside(toLayout(x, originalOf_) / scale_, makeFrame(w, nullptr).participants);
 }
 
 Interpolator::Step Interpolator::step(const Frame& frame, const State& s, State& candidate, Eigen::MatrixX2d& plain,
@@ -328,7 +364,7 @@ InterpolationResult Interpolator::solve(const Eigen::VectorXd& w, const Eigen::M
   if (warmStart) {
     if (warmStart->rows() != vertexCount() || !warmStart->allFinite())
       throw InputError("warm start: expected " + std::to_string(vertexCount()) + " finite positions");
-    s.x = *warmStart / scale_;
+    s.x = toLayout(*warmStart, originalOf_) / scale_;
   } else {
     s.x = frame.blend;
   }
@@ -345,7 +381,7 @@ InterpolationResult Interpolator::solve(const Eigen::VectorXd& w, const Eigen::M
   ensureFactorization(frame, s.active, result);
   result.startEnergy = s.energy;
   result.energyHistory.push_back(s.energy);
-  const double startNorm = infinityNorm(s.gradient);
+  const double startNorm = gradientNorm(s.gradient);
   // The fixed-point map of this frame is close to the last one's (it moves continuously with w,
   // also where a weight reaches or leaves zero), so the secant history seeds this frame. A
   // refactorized H changes the map more, but measurably less than dropping the history costs;
@@ -367,7 +403,7 @@ InterpolationResult Interpolator::solve(const Eigen::VectorXd& w, const Eigen::M
     std::swap(s, candidate);
     ++result.iterations;
     result.energyHistory.push_back(s.energy);
-    norm = infinityNorm(s.gradient);
+    norm = gradientNorm(s.gradient);
     result.residualHistory.push_back(relative(norm));
   }
 
@@ -377,7 +413,7 @@ InterpolationResult Interpolator::solve(const Eigen::VectorXd& w, const Eigen::M
   result.relativeResidual = relative(norm);
   result.energy = s.energy;
   result.interpolationEnergy = s.energy - s.placement;
-  result.x = s.x * scale_;
+  result.x = fromLayout(s.x, originalOf_) * scale_;
   result.milliseconds =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
   return result;

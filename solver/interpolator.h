@@ -17,6 +17,9 @@
 // raises E is replaced by the plain step, and a plain step that raises E is backtracked, so a
 // solve never returns a worse energy than its start.
 //
+// Threads. Internally the vertices are numbered so that each thread owns one block of them in
+// every loop of an iteration (thread_layout.h); inputs and outputs use the multimesh's numbering.
+//
 // Units. Internally all lengths are divided by the shape size s = sqrt(mean key area), so
 // lambda, tau and energies mean the same at any drawing resolution. Inputs and outputs are in
 // the multimesh's own units.
@@ -30,6 +33,8 @@
 #include "multimesh.h"
 #include "non_overlap.h"
 #include "placement.h"
+#include "thread_block.h"
+#include "thread_layout.h"
 
 #include <Eigen/Core>
 #include <Eigen/Sparse>
@@ -124,6 +129,8 @@ class Interpolator {
  private:
   struct Frame;
   struct State;
+  Interpolator(ThreadLayout layout, const InterpolationParams& params, const SolverOptions& options);
+  double gradientNorm(const Eigen::MatrixX2d& g) const;  // |g|_inf, over the vertex split
   Frame makeFrame(const Eigen::VectorXd& w, const VertexSprings* springs) const;
   void evaluateState(const Frame& frame, State& state) const;
   // Only what placement groups need: active cohesive pairs and non-overlap contacts.
@@ -143,6 +150,10 @@ class Interpolator {
   InterpolationParams params_;
   SolverOptions options_;
   int threads_ = 1;
+  // Internally, vertices are numbered as threadLayout() numbers them (see thread_layout.h), and
+  // thread p works on the vertices [vertexSplit_.begin(p), vertexSplit_.end(p)) in every loop.
+  std::vector<int> originalOf_;            // internal vertex k is the caller's vertex originalOf_[k]
+  RowSplit vertexSplit_, triangleSplit_;
   double scale_ = 1;                       // shape size s
   std::vector<Eigen::MatrixX2d> keys_;     // X_i / s
   double vertexWeight_ = 0;                // placement weight m_v = 1/n of every vertex (placement.h)

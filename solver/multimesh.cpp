@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <set>
+#include <stdexcept>
 #include <utility>
 
 namespace ib {
@@ -30,6 +31,33 @@ double signedArea(const Eigen::Vector2d& p0, const Eigen::Vector2d& p1, const Ei
 double boundingDiagonal(const Eigen::MatrixX2d& points) {
   if (points.rows() < 2) return 0.0;
   return (points.colwise().maxCoeff() - points.colwise().minCoeff()).norm();
+}
+
+Multimesh renumbered(const Multimesh& mesh, const std::vector<int>& vertexOrder) {
+  const int n = mesh.vertexCount();
+  if (static_cast<int>(vertexOrder.size()) != n) throw std::invalid_argument("renumbered: order of the wrong size");
+  std::vector<int> newIndex(n, -1);
+  for (int k = 0; k < n; ++k) {
+    if (vertexOrder[k] < 0 || vertexOrder[k] >= n || newIndex[vertexOrder[k]] >= 0)
+      throw std::invalid_argument("renumbered: order is not a permutation");
+    newIndex[vertexOrder[k]] = k;
+  }
+  std::vector<Triangle> triangles = mesh.triangles();
+  for (Triangle& tri : triangles)
+    for (int& v : tri) v = newIndex[v];
+  Multimesh out(n, triangles);
+  for (int t = 0; t < mesh.triangleCount(); ++t) out.setStiffness(t, mesh.stiffness(t));
+  for (int i = 0; i < mesh.keyCount(); ++i) {
+    const Eigen::MatrixX2d X = mesh.keyPositions(i);
+    Eigen::MatrixX2d positions(n, 2);
+    for (int k = 0; k < n; ++k) positions.row(k) = X.row(vertexOrder[k]);
+    std::vector<CohesivePair> pairs = mesh.cohesivePairs(i);
+    for (CohesivePair& p : pairs) p = {newIndex[p.a], newIndex[p.b], newIndex[p.c], newIndex[p.d]};
+    std::vector<int> boundary = mesh.boundaryVertices(i);
+    for (int& v : boundary) v = newIndex[v];
+    out.addKey(positions, std::move(pairs), std::move(boundary));
+  }
+  return out;
 }
 
 Multimesh::Multimesh(int vertexCount, const std::vector<Triangle>& triangles) {

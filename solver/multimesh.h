@@ -70,6 +70,11 @@ class Multimesh {
   std::vector<Key> keys_;
 };
 
+// The same multimesh with its vertices renumbered: vertex k is the old vertex vertexOrder[k] (a
+// permutation of 0..n-1). Positions, triangles, cohesive pairs and boundary sets follow; the
+// triangles keep their order (and so does OpenMesh's construction, which can depend on it).
+Multimesh renumbered(const Multimesh& mesh, const std::vector<int>& vertexOrder);
+
 // Edge matrix [x1 - x0, x2 - x0] of triangle `tri` in positions x (n x 2): 2 x 2, columns are edges.
 Eigen::Matrix2d edgeMatrix(const Eigen::MatrixX2d& x, const Triangle& tri);
 

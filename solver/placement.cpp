@@ -1,7 +1,9 @@
 #include "placement.h"
 
+#include <array>
 #include <cmath>
 #include <numeric>
+#include <omp.h>
 
 namespace ib {
 
@@ -104,9 +106,74 @@ void alignSet(Eigen::MatrixX2d& x, const Eigen::MatrixX2d& target, int count, In
   }
 }
 
+// alignSet over all vertices, each block of rows summed and moved by one thread. The partial sums
+// are added in block order by every thread alike: bit-identical from run to run.
+void alignAll(Eigen::MatrixX2d& x, const Eigen::MatrixX2d& target, const RowSplit& rows) {
+  double* px = x.col(0).data();
+  double* py = x.col(1).data();
+  const double* tx = target.col(0).data();
+  const double* ty = target.col(1).data();
+  const int blocks = rows.threads();
+  const double count = static_cast<double>(x.rows());
+  std::vector<std::array<double, 4>> centroids(static_cast<size_t>(blocks));
+  std::vector<std::array<double, 2>> turns(static_cast<size_t>(blocks));
+#pragma omp parallel num_threads(blocks)
+  {
+    // The team may have fewer threads than blocks.
+    const int self = omp_get_thread_num(), team = omp_get_num_threads();
+    for (int p = self; p < blocks; p += team) {
+      double cx = 0, cy = 0, qx = 0, qy = 0;
+#pragma omp simd reduction(+ : cx, cy, qx, qy)
+      for (int v = rows.begin(p); v < rows.end(p); ++v) {
+        cx += px[v];
+        cy += py[v];
+        qx += tx[v];
+        qy += ty[v];
+      }
+      centroids[p] = {cx, cy, qx, qy};
+    }
+#pragma omp barrier
+    std::array<double, 4> centre{};
+    for (const auto& c : centroids)
+      for (int k = 0; k < 4; ++k) centre[k] += c[k];
+    for (double& c : centre) c /= count;
+    const auto [cx, cy, qx, qy] = centre;
+    for (int p = self; p < blocks; p += team) {
+      double dot = 0, cross = 0;
+#pragma omp simd reduction(+ : dot, cross)
+      for (int v = rows.begin(p); v < rows.end(p); ++v) {
+        const double ax = px[v] - cx, ay = py[v] - cy, bx = tx[v] - qx, by = ty[v] - qy;
+        dot += ax * bx + ay * by;
+        cross += ax * by - ay * bx;
+      }
+      turns[p] = {dot, cross};
+    }
+#pragma omp barrier
+    double dot = 0, cross = 0;
+    for (const auto& t : turns) {
+      dot += t[0];
+      cross += t[1];
+    }
+    const double angle = std::atan2(cross, dot), c = std::cos(angle), s = std::sin(angle);
+    for (int p = self; p < blocks; p += team) {
+#pragma omp simd
+      for (int v = rows.begin(p); v < rows.end(p); ++v) {
+        const double ax = px[v] - cx, ay = py[v] - cy;
+        px[v] = c * ax - s * ay + qx;
+        py[v] = s * ax + c * ay + qy;
+      }
+    }
+  }
+}
+
 }  // namespace
 
-void alignGroups(Eigen::MatrixX2d& x, const Eigen::MatrixX2d& target, const PlacementGroups& groups) {
+void alignGroups(Eigen::MatrixX2d& x, const Eigen::MatrixX2d& target, const PlacementGroups& groups,
+                 const RowSplit& rows) {
+  if (groups.groupCount() == 1 && rows.threads() > 1 && rows.size() == x.rows()) {
+    alignAll(x, target, rows);
+    return;
+  }
   if (groups.groupCount() == 1) {  // the common case, without indirection
     alignSet(x, target, static_cast<int>(x.rows()), [](int i) { return i; });
     return;

@@ -7,6 +7,8 @@
 // itself, where it was drawn; inbetweens depend only on w, so they cannot drift.
 #pragma once
 
+#include "thread_block.h"
+
 #include <Eigen/Core>
 #include <utility>
 #include <vector>
@@ -36,6 +38,9 @@ class PlacementGroups {
 
 // Applies, per group, the rigid motion (rotation + translation) minimizing
 // sum_v |R x_v + t - target_v|^2 (m_v is the same for all vertices). x, target: n x 2.
-void alignGroups(Eigen::MatrixX2d& x, const Eigen::MatrixX2d& target, const PlacementGroups& groups);
+// rows: when given (rows.size() = n), a single group is aligned in parallel, thread p summing
+// and moving the vertices [rows.begin(p), rows.end(p)); several groups are aligned serially.
+void alignGroups(Eigen::MatrixX2d& x, const Eigen::MatrixX2d& target, const PlacementGroups& groups,
+                 const RowSplit& rows = {});
 
 }  // namespace ib

@@ -208,3 +208,25 @@ TEST_CASE("interpolation: keys with zero weight do not change the inbetween") {
   // Only the weak placement tie sees the extra keys (through the shape size that normalizes it).
   REQUIRE((a.x - b.x).cwiseAbs().maxCoeff() < 1e-4 * two.size);
 }
+
+TEST_CASE("interpolation: on a mesh large enough for several threads, 2 threads give 1 thread's inbetween, in the caller's numbering") {
+  // Over 4000 vertices, so the solver really splits the work (smaller meshes run on one thread).
+  const auto f = ib::test::strip(6000, 2);
+  REQUIRE(f.mesh.vertexCount() >= 4000);
+  SolverOptions one = tight(), two = tight();
+  one.threads = 1;
+  two.threads = 2;
+  Interpolator single(f.mesh, {}, one), split(f.mesh, {}, two);
+  REQUIRE(split.threads() == 2);
+  Eigen::VectorXd middle(2);
+  middle << 0.4, 0.6;
+  const InterpolationResult a = single.solve(middle), b = split.solve(middle);
+  REQUIRE(a.converged);
+  REQUIRE(b.converged);
+  CHECK((a.x - b.x).cwiseAbs().maxCoeff() <= 1e-6 * f.size);
+  // Vertex v of the result is vertex v of the caller's multimesh: w = e_1 gives back X_1 row by row.
+  const Eigen::MatrixX2d start = f.mesh.keyPositions(0);
+  const InterpolationResult key = split.solve(unit(2, 1), &start);
+  REQUIRE(key.converged);
+  CHECK((key.x - f.mesh.keyPositions(1)).cwiseAbs().maxCoeff() <= 1e-6 * f.size);
+}
