@@ -25,18 +25,10 @@ class RowSplit {
   RowSplit() = default;  // no rows, one thread
   // start: threads + 1 non-decreasing entries, the first 0.
   explicit RowSplit(std::vector<int> start) : start_(std::move(start)) {}
-  // size rows split evenly among `threads`.
-  static RowSplit even(int size, int threads) {
-    std::vector<int> start(static_cast<size_t>(threads) + 1);
-    for (int p = 0; p <= threads; ++p) start[p] = static_cast<int>(static_cast<long>(size) * p / threads);
-    return RowSplit(std::move(start));
-  }
-
   int threads() const { return start_.size() > 1 ? static_cast<int>(start_.size()) - 1 : 1; }
   int size() const { return start_.empty() ? 0 : start_.back(); }
   int begin(int thread) const { return start_.empty() ? 0 : start_[thread]; }
   int end(int thread) const { return start_.empty() ? 0 : start_[thread + 1]; }
-  const std::vector<int>& start() const { return start_; }
 
  private:
   std::vector<int> start_;
