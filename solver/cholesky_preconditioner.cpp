@@ -89,7 +89,7 @@ void CholeskyPreconditioner::adopt(const Eigen::SparseMatrix<double>& L, const i
       buildSchedule(L);
     } else {
       perm_.clear();
-      rangeSchedule();
+      rangeSchedule(L);
     }
   }
   if (fresh || dropTolerance_ > 0) {
@@ -265,7 +265,17 @@ void CholeskyPreconditioner::buildSchedule(const Eigen::SparseMatrix<double>& L)
   top_ = std::move(schedule.top);
 }
 
-void CholeskyPreconditioner::rangeSchedule() {
+void CholeskyPreconditioner::rangeSchedule(const Eigen::SparseMatrix<double>& L) {
+  // The parts are only independent if no column's parent in the elimination tree lies in
+  // another part: true for the pattern the plan was made from, not for one with more couplings.
+  const int* start = L.outerIndexPtr();
+  const int* row = L.innerIndexPtr();
+  for (int p = 0; p < threads_; ++p)
+    for (int j = partStart_[p]; j < partStart_[p + 1]; ++j) {
+      const int parent = start[j] + 1 < start[j + 1] ? row[start[j] + 1] : -1;
+      if (parent >= partStart_[p + 1] && parent < partStart_.back())
+        throw std::logic_error("Cholesky factor: H couples two threads' parts of its elimination plan");
+    }
   part_.assign(threads_, {});
   for (int p = 0; p < threads_; ++p)
     for (int j = partStart_[p]; j < partStart_[p + 1]; ++j) part_[p].push_back(j);

@@ -71,8 +71,9 @@ class CholeskyPreconditioner {
   // none). fresh: L comes from a new analysis (else it has the pattern of the last call's).
   void adopt(const Eigen::SparseMatrix<double>& L, const int* perm, bool fresh);
   void buildSchedule(const Eigen::SparseMatrix<double>& L);
-  // The parts and top separator of setPreordered's ranges.
-  void rangeSchedule();
+  // The parts and top separator of setPreordered's ranges (std::logic_error if L's elimination
+  // tree links two parts).
+  void rangeSchedule(const Eigen::SparseMatrix<double>& L);
   // The entries of L kept (all, or those above the drop tolerance), by columns and by rows.
   void storePattern(const Eigen::SparseMatrix<double>& L);
   // out (n x 2) <- H^{-1} b, or position - H^{-1} b when position is given; out may be b.

@@ -180,3 +180,18 @@ TEST_CASE("cholesky preconditioner: numbered by its elimination plan, a matrix f
     CHECK((P.transpose() * x - y).norm() < 1e-5 * y.norm());
   }
 }
+
+TEST_CASE("cholesky preconditioner: a preordered matrix that couples two threads' parts is refused, not solved wrongly") {
+  const Eigen::SparseMatrix<double> H = shiftedLaplacian();
+  const int n = static_cast<int>(H.rows());
+  const EliminationPlan plan = planElimination(H, 2);
+  Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> P(n);
+  for (int k = 0; k < n; ++k) P.indices()[plan.order[k]] = k;
+  Eigen::SparseMatrix<double> coupled = P * H * P.transpose();
+  // One entry between the first unknown of part 0 and the first of part 1.
+  const int a = plan.partStart[0], b = plan.partStart[1];
+  coupled.coeffRef(a, b) = coupled.coeffRef(b, a) = -0.1;
+  CholeskyPreconditioner factor(2);
+  factor.setPreordered(plan.partStart);
+  REQUIRE_THROWS_AS(factor.factorize(coupled), std::logic_error);
+}
