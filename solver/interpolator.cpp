@@ -121,14 +121,13 @@ Interpolator::Interpolator(const Multimesh& mesh, const InterpolationParams& par
 Interpolator::Interpolator(ThreadLayout layout, const InterpolationParams& params, const SolverOptions& options)
     : params_(params),
       options_(options),
-      threads_(layout.vertices.threads()),
       originalOf_(std::move(layout.originalOf)),
       vertexSplit_(std::move(layout.vertices)),
       triangleSplit_(std::move(layout.triangleSplit)),
       groups_(layout.mesh.vertexCount(), meshEdges(layout.mesh)),
-      factor_(threads_),
+      factor_(vertexSplit_.threads()),
       assembly_(layout.mesh.vertexCount()),
-      anderson_(options.andersonDepth, threads_) {
+      anderson_(options.andersonDepth, vertexSplit_.threads()) {
   const Multimesh& mesh = layout.mesh;
   factor_.setPreordered(layout.partStart);
   anderson_.setRowSplit(vertexSplit_, 2);  // the x and y columns of an n x 2 matrix

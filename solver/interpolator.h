@@ -123,7 +123,7 @@ class Interpolator {
   double stiffnessScale() const { return stiffnessScale_; }
   int keyCount() const { return static_cast<int>(keys_.size()); }
   int vertexCount() const { return static_cast<int>(keys_.front().rows()); }
-  int threads() const { return threads_; }
+  int threads() const { return vertexSplit_.threads(); }
   long factorNonZeros() const { return factor_.factorNonZeros(); }
 
  private:
@@ -149,7 +149,6 @@ class Interpolator {
 
   InterpolationParams params_;
   SolverOptions options_;
-  int threads_ = 1;
   // Internally, vertices are numbered as threadLayout() numbers them (see thread_layout.h), and
   // thread p works on the vertices [vertexSplit_.begin(p), vertexSplit_.end(p)) in every loop.
   std::vector<int> originalOf_;            // internal vertex k is the caller's vertex originalOf_[k]
