@@ -3,6 +3,7 @@
 #include "cli.h"
 #include "error.h"
 #include "interpolator.h"
+#include "reference_arap.h"
 #include "shape_generators.h"
 #include "warm_start.h"
 
@@ -12,6 +13,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <sstream>
 #include <unistd.h>
 
@@ -34,6 +36,11 @@ constexpr const char* kBenchUsage =
     "                      iterations from key 0's drawing (a far start) until the energy is within\n"
     "                      1e-3 of the optimum, accelerated vs plain local-global (exact matrix,\n"
     "                      no Anderson)\n"
+    "  reference_ms_per_iter\n"
+    "                      the machine's speed during the case: one serial single-key ARAP iteration\n"
+    "                      in libigl's formulation (solver/reference_arap.h) on the same strip, ends\n"
+    "                      pinned and bent 180 degrees, timed right after each sweep\n"
+    "  iter_vs_reference   ms_per_iter / reference_ms_per_iter, paired per sweep (median)\n"
     "\n"
     "  --sizes LIST    approximate vertex counts, e.g. 1k,10k,100k (default)\n"
     "  --keys LIST     key counts, each 1..4 (default 2,4)\n"
@@ -76,6 +83,7 @@ void progress(const std::string& text) {
 // One warm-started sweep of `frames` frames after a cold solve at s = 0.
 struct Sweep {
   double msPerFrame = 0, msPerIter = 0, maxMs = 0, itersPerFrame = 0, firstSolveMs = 0, factorMs = 0;
+  double referenceMsPerIter = 0;  // the yardstick, timed right after the sweep
   int factorizations = 0, unconverged = 0, threads = 0;
   long factorNonZeros = 0;
 };
@@ -115,6 +123,33 @@ Sweep runSweep(const Multimesh& mesh, const InterpolationParams& params, const S
   return out;
 }
 
+// The yardstick: single-key ARAP on the strip's rest shape with its two end columns pinned and
+// bent 180 degrees, iterated `iterations` times from where the last call left it.
+class Yardstick {
+ public:
+  explicit Yardstick(const Multimesh& mesh) : rest_(mesh.keyPositions(0)) {
+    const double left = rest_.col(0).minCoeff(), right = rest_.col(0).maxCoeff();
+    const double slack = 1e-9 * (right - left);
+    for (int v = 0; v < rest_.rows(); ++v)
+      if (rest_(v, 0) < left + slack || rest_(v, 0) > right - slack) handles_.push_back(v);
+    arap_.emplace(rest_, mesh.triangles(), handles_);
+    const Eigen::MatrixX2d bent = bendStrip(rest_, M_PI);
+    handlePositions_.resize(static_cast<int>(handles_.size()), 2);
+    for (size_t h = 0; h < handles_.size(); ++h) handlePositions_.row(h) = bent.row(handles_[h]);
+    x_ = rest_;
+  }
+  double msPerIteration(int iterations) {
+    const auto started = Clock::now();
+    for (int k = 0; k < iterations; ++k) arap_->iterate(x_, handlePositions_);
+    return millisecondsSince(started) / iterations;
+  }
+
+ private:
+  Eigen::MatrixX2d rest_, x_, handlePositions_;
+  std::vector<int> handles_;
+  std::optional<ReferenceArap> arap_;
+};
+
 template <class Get>
 double median(std::vector<Sweep> runs, Get get) {
   std::sort(runs.begin(), runs.end(), [&](const Sweep& a, const Sweep& b) { return get(a) < get(b); });
@@ -130,8 +165,16 @@ nlohmann::json benchCase(int vertices, int keys, int frames, int repeats, int th
   const Eigen::VectorXd middle = keys == 2 ? sweepWeights(2, 0.5) : sweepWeights(keys, 0.3);
 
   // Timings are medians over repeated sweeps: a shared machine's other load shows up as noise.
+  // Each sweep is followed by the yardstick, so that every sweep is paired with the machine's
+  // speed at that moment.
+  Yardstick yardstick(mesh);
+  const int referenceIterations = std::max(5, 200000 / mesh.vertexCount());
   std::vector<Sweep> runs;
-  for (int r = 0; r < repeats; ++r) runs.push_back(runSweep(mesh, params, options, keys, frames, label));
+  for (int r = 0; r < repeats; ++r) {
+    runs.push_back(runSweep(mesh, params, options, keys, frames, label));
+    progress(label + ": yardstick");
+    runs.back().referenceMsPerIter = yardstick.msPerIteration(referenceIterations);
+  }
   const Sweep& any = runs.front();
   nlohmann::json out = {{"bench", "interp"},
                         {"vertices", mesh.vertexCount()},
@@ -147,7 +190,10 @@ nlohmann::json benchCase(int vertices, int keys, int frames, int repeats, int th
                         {"ms_per_factorization", median(runs, [](const Sweep& s) { return s.factorMs; })},
                         {"unconverged_frames", any.unconverged},
                         {"first_solve_ms", median(runs, [](const Sweep& s) { return s.firstSolveMs; })},
-                        {"factor_nonzeros", any.factorNonZeros}};
+                        {"factor_nonzeros", any.factorNonZeros},
+                        {"reference_ms_per_iter", median(runs, [](const Sweep& s) { return s.referenceMsPerIter; })},
+                        {"iter_vs_reference",
+                         median(runs, [](const Sweep& s) { return s.msPerIter / s.referenceMsPerIter; })}};
 
   if (baseline) {
     progress(label + ": optimum and plain local-global baseline");

@@ -17,7 +17,8 @@ endif()
 if(DEFINED MESSAGE AND NOT err MATCHES "${MESSAGE}")
   message(FATAL_ERROR "message does not mention '${MESSAGE}': '${err}'")
 endif()
-# Benchmarks: every stdout line a JSON object of the case's kind with a positive time.
+# Benchmarks: every stdout line a JSON object of the case's kind with a positive time (and for
+# interp a positive yardstick time).
 if(EXPECTED EQUAL 0 AND "${ARGS}" MATCHES "^bench[|](interp|comesh|anim|render)")
   set(case ${CMAKE_MATCH_1})
   set(time_field ms_per_iter)
@@ -40,6 +41,12 @@ if(EXPECTED EQUAL 0 AND "${ARGS}" MATCHES "^bench[|](interp|comesh|anim|render)"
     string(JSON t GET "${line}" ${time_field})
     if(NOT t GREATER 0)
       message(FATAL_ERROR "${time_field} not positive: ${t}")
+    endif()
+    if(case STREQUAL "interp")  # the yardstick timed beside every interpolation case
+      string(JSON reference GET "${line}" reference_ms_per_iter)
+      if(NOT reference GREATER 0)
+        message(FATAL_ERROR "reference_ms_per_iter not positive: ${reference}")
+      endif()
     endif()
   endforeach()
 endif()
