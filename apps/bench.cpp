@@ -13,6 +13,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <optional>
 #include <sstream>
 #include <unistd.h>
@@ -41,6 +42,10 @@ constexpr const char* kBenchUsage =
     "                      in libigl's formulation (solver/reference_arap.h) on the same strip, ends\n"
     "                      pinned and bent 180 degrees, timed right after each sweep\n"
     "  iter_vs_reference   ms_per_iter / reference_ms_per_iter, paired per sweep (median)\n"
+    "  steal_percent       share of all CPUs' time that a hypervisor gave to other guests during the\n"
+    "                      sweeps and yardsticks (Linux /proc/stat; absent elsewhere). Above a few\n"
+    "                      percent a vCPU was taken away mid-run: two-thread times then show the host\n"
+    "                      more than the code\n"
     "\n"
     "  --sizes LIST    approximate vertex counts, e.g. 1k,10k,100k (default)\n"
     "  --keys LIST     key counts, each 1..4 (default 2,4)\n"
@@ -67,6 +72,24 @@ Eigen::VectorXd sweepWeights(int keys, double s) {
     w /= w.sum();
   }
   return w;
+}
+
+// CPU time of all CPUs since boot, in clock ticks, from Linux's /proc/stat; steal is time a
+// hypervisor gave to other guests while this one wanted to run. Empty where unavailable.
+struct CpuTicks {
+  long long steal = 0, total = 0;
+};
+std::optional<CpuTicks> cpuTicks() {
+  std::ifstream stat("/proc/stat");
+  std::string label;
+  long long fields[8] = {};  // user nice system idle iowait irq softirq steal
+  if (!(stat >> label) || label != "cpu") return std::nullopt;
+  for (long long& field : fields)
+    if (!(stat >> field)) return std::nullopt;
+  CpuTicks ticks;
+  for (long long field : fields) ticks.total += field;
+  ticks.steal = fields[7];
+  return ticks;
 }
 
 // First iteration whose energy is within `gap` (relative) of optimum, or -1.
@@ -170,11 +193,13 @@ nlohmann::json benchCase(int vertices, int keys, int frames, int repeats, int th
   Yardstick yardstick(mesh);
   const int referenceIterations = std::max(5, 200000 / mesh.vertexCount());
   std::vector<Sweep> runs;
+  const std::optional<CpuTicks> ticksBefore = cpuTicks();
   for (int r = 0; r < repeats; ++r) {
     runs.push_back(runSweep(mesh, params, options, keys, frames, label));
     progress(label + ": yardstick");
     runs.back().referenceMsPerIter = yardstick.msPerIteration(referenceIterations);
   }
+  const std::optional<CpuTicks> ticksAfter = cpuTicks();
   const Sweep& any = runs.front();
   nlohmann::json out = {{"bench", "interp"},
                         {"vertices", mesh.vertexCount()},
@@ -194,6 +219,8 @@ nlohmann::json benchCase(int vertices, int keys, int frames, int repeats, int th
                         {"reference_ms_per_iter", median(runs, [](const Sweep& s) { return s.referenceMsPerIter; })},
                         {"iter_vs_reference",
                          median(runs, [](const Sweep& s) { return s.msPerIter / s.referenceMsPerIter; })}};
+  if (ticksBefore && ticksAfter && ticksAfter->total > ticksBefore->total)
+    out["steal_percent"] = 100.0 * double(ticksAfter->steal - ticksBefore->steal) / double(ticksAfter->total - ticksBefore->total);
 
   if (baseline) {
     progress(label + ": optimum and plain local-global baseline");
