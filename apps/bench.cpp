@@ -146,31 +146,43 @@ Sweep runSweep(const Multimesh& mesh, const InterpolationParams& params, const S
   return out;
 }
 
+// Vertices of a strip's two end columns: the smallest and the largest x.
+std::vector<int> endColumns(const Eigen::MatrixX2d& rest) {
+  const double left = rest.col(0).minCoeff(), right = rest.col(0).maxCoeff();
+  const double slack = 1e-9 * (right - left);
+  std::vector<int> ends;
+  for (int v = 0; v < rest.rows(); ++v)
+    if (rest(v, 0) < left + slack || rest(v, 0) > right - slack) ends.push_back(v);
+  return ends;
+}
+
+// The given rows of x, in that order: rows.size() x 2.
+Eigen::MatrixX2d rowsOf(const Eigen::MatrixX2d& x, const std::vector<int>& rows) {
+  Eigen::MatrixX2d out(static_cast<int>(rows.size()), 2);
+  for (size_t r = 0; r < rows.size(); ++r) out.row(r) = x.row(rows[r]);
+  return out;
+}
+
 // The yardstick: single-key ARAP on the strip's rest shape with its two end columns pinned and
 // bent 180 degrees, iterated `iterations` times from where the last call left it.
 class Yardstick {
  public:
-  explicit Yardstick(const Multimesh& mesh) : rest_(mesh.keyPositions(0)) {
-    const double left = rest_.col(0).minCoeff(), right = rest_.col(0).maxCoeff();
-    const double slack = 1e-9 * (right - left);
-    for (int v = 0; v < rest_.rows(); ++v)
-      if (rest_(v, 0) < left + slack || rest_(v, 0) > right - slack) handles_.push_back(v);
-    arap_.emplace(rest_, mesh.triangles(), handles_);
-    const Eigen::MatrixX2d bent = bendStrip(rest_, M_PI);
-    handlePositions_.resize(static_cast<int>(handles_.size()), 2);
-    for (size_t h = 0; h < handles_.size(); ++h) handlePositions_.row(h) = bent.row(handles_[h]);
-    x_ = rest_;
-  }
+  explicit Yardstick(const Multimesh& mesh)
+      : x_(mesh.keyPositions(0)),
+        handles_(endColumns(x_)),
+        arap_(x_, mesh.triangles(), handles_),
+        handlePositions_(rowsOf(bendStrip(x_, M_PI), handles_)) {}
   double msPerIteration(int iterations) {
     const auto started = Clock::now();
-    for (int k = 0; k < iterations; ++k) arap_->iterate(x_, handlePositions_);
+    for (int k = 0; k < iterations; ++k) arap_.iterate(x_, handlePositions_);
     return millisecondsSince(started) / iterations;
   }
 
  private:
-  Eigen::MatrixX2d rest_, x_, handlePositions_;
+  Eigen::MatrixX2d x_;  // starts at the rest shape; each call goes on from where the last stopped
   std::vector<int> handles_;
-  std::optional<ReferenceArap> arap_;
+  ReferenceArap arap_;
+  Eigen::MatrixX2d handlePositions_;
 };
 
 template <class Get>
