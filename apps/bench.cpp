@@ -29,7 +29,7 @@ constexpr const char* kBenchUsage =
     "Interpolation solver on strips built in code (rest, 180-degree bend, stretch, wave keys).\n"
     "One JSON line per (vertices, keys) case:\n"
     "  ms_per_iter         one accelerated iteration (local step + global solve), over the sweep\n"
-    "                      below, factorizations excluded\n"
+    "                      below, factorizations excluded (null if no frame needed one)\n"
     "  iters_to_converge   mean iterations per warm-started frame to relative residual 1e-3\n"
     "  ms_per_frame        mean wall time of those frames (each at a new w), factorizations included;\n"
     "                      each starts from the last two frames extrapolated (WarmStartPredictor)\n"
@@ -231,6 +231,10 @@ nlohmann::json benchCase(int vertices, int keys, int frames, int repeats, int th
                         {"reference_ms_per_iter", median(runs, [](const Sweep& s) { return s.referenceMsPerIter; })},
                         {"iter_vs_reference",
                          median(runs, [](const Sweep& s) { return s.msPerIter / s.referenceMsPerIter; })}};
+  if (any.itersPerFrame == 0) {  // one key: every frame is the key itself, there is no iteration to time
+    out["ms_per_iter"] = nullptr;
+    out["iter_vs_reference"] = nullptr;
+  }
   if (ticksBefore && ticksAfter && ticksAfter->total > ticksBefore->total)
     out["steal_percent"] = 100.0 * double(ticksAfter->steal - ticksBefore->steal) / double(ticksAfter->total - ticksBefore->total);
 
