@@ -38,7 +38,7 @@ class DeformationEnergy {
   // and adds dW_D/dx (n x 2) to gradient. Thread p takes the triangles [triangles.begin(p),
   // triangles.end(p)) and sums the gradient of the vertices [vertices.begin(p), vertices.end(p))
   // (both splits with the same thread count; std::invalid_argument if they do not match the
-  // mesh). Uses an internal scratch buffer: one evaluate() at a time per object.
+  // mesh). Uses internal buffers: one evaluate() at a time per object.
   double evaluate(const Eigen::MatrixX2d& x, const ActiveKeys& keys, Eigen::MatrixX2d& gradient,
                   const RowSplit& vertices, const RowSplit& triangles) const;
 
@@ -50,9 +50,13 @@ class DeformationEnergy {
   std::vector<double> rest_;                  // m x 5 x t
   const double* restOf(int key) const { return rest_.data() + static_cast<size_t>(key) * 5 * triangles_.size(); }
   std::array<std::vector<int>, 3> corner_;    // vertex of each corner, per triangle
-  std::vector<int> incidenceStart_;           // CSR over slots 3 v + c (vertex v as corner c), 3n + 1
-  std::vector<int> incidence_;                // triangles, grouped by slot
-  mutable std::vector<double> scratch_;       // D00 D01 D10 D11 G00 G01 G10 G11, each t long
+  // Gradient a block's triangles owe a vertex another block owns, added by that block after a
+  // barrier: one list per block, reused from call to call.
+  struct DeferredGradient {
+    int vertex;
+    double x, y;
+  };
+  mutable std::vector<std::vector<DeferredGradient>> deferred_;
 };
 
 // Cosine and sine of the rotation closest to F = [f00 f01; f10 f11] in the Frobenius norm (2D
