@@ -1,0 +1,36 @@
+#include "deformation_energy.h"
+#include "shape_generators.h"
+
+#include <catch2/catch.hpp>
+#include <omp.h>
+
+using namespace ib;
+
+TEST_CASE("deformation energy: any split into blocks, on a team of any size, gives one block's energy and gradient") {
+  // 2 keys on a 24 x 6 strip, evaluated at a third shape. Blocks own vertex ranges that do not
+  // follow the triangles' order, so most triangles owe gradient to another block's vertices.
+  const GridMesh grid = rectangleGrid(24, 6, 8.0, 2.0);
+  const int n = static_cast<int>(grid.points.rows()), t = static_cast<int>(grid.triangles.size());
+  const DeformationEnergy wd(grid.triangles, {grid.points, bendStrip(grid.points, 2.0)}, Eigen::VectorXd::Ones(t));
+  const ActiveKeys keys{{0, 1}, {0.3, 0.7}};
+  const Eigen::MatrixX2d x = waveStrip(stretchStrip(grid.points, 1.4, 0.8), 0.3, 1.0);
+  const auto evaluate = [&](const RowSplit& vertices, const RowSplit& triangles, Eigen::MatrixX2d& gradient) {
+    gradient.setZero(n, 2);
+    return wd.evaluate(x, keys, gradient, vertices, triangles);
+  };
+  Eigen::MatrixX2d reference;
+  const double energy = evaluate(RowSplit({0, n}), RowSplit({0, t}), reference);
+  REQUIRE(energy > 0.1);
+  const double scale = reference.cwiseAbs().maxCoeff();
+  for (const auto& [v, k] : {std::pair{std::vector<int>{0, 50, n}, std::vector<int>{0, 130, t}},
+                             std::pair{std::vector<int>{0, 0, 100, n}, std::vector<int>{0, 40, 41, t}}}) {
+    Eigen::MatrixX2d gradient;
+    CHECK(evaluate(RowSplit(v), RowSplit(k), gradient) == Approx(energy).epsilon(1e-12));
+    CHECK((gradient - reference).cwiseAbs().maxCoeff() < 1e-12 * scale);
+    double nestedEnergy = 0;
+#pragma omp parallel num_threads(1)  // the evaluation's own region nests inside: a team of one
+    nestedEnergy = evaluate(RowSplit(v), RowSplit(k), gradient);
+    CHECK(nestedEnergy == Approx(energy).epsilon(1e-12));
+    CHECK((gradient - reference).cwiseAbs().maxCoeff() < 1e-12 * scale);
+  }
+}
