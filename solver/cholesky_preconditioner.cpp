@@ -148,106 +148,6 @@ void CholeskyPreconditioner::storePattern(const Eigen::SparseMatrix<double>& L) 
     }
 }
 
-namespace {
-
-// Independent subtrees of L's elimination tree, one list of columns per thread, and the top
-// separator above them.
-struct Schedule {
-  std::vector<std::vector<int>> part;  // columns ascending: children before parents
-  std::vector<int> top;                // ascending as well
-};
-
-// parent: the elimination tree (-1 at a root); entries: L's nonzeros in each column.
-Schedule scheduleOf(const std::vector<int>& parent, const std::vector<long>& entries, int threads) {
-  const int n = static_cast<int>(parent.size());
-  std::vector<long> weight = entries;  // nonzeros in each subtree, once the loop has passed it
-  std::vector<std::vector<int>> children(n);
-  std::vector<int> roots;
-  for (int j = 0; j < n; ++j) {  // a child comes before its parent
-    if (parent[j] >= 0) {
-      weight[parent[j]] += weight[j];
-      children[parent[j]].push_back(j);
-    } else {
-      roots.push_back(j);
-    }
-  }
-  // Walk down from the root while one child carries almost all the work: that chain is the top
-  // separator. Below it, subtrees are independent and go to threads by greedy balancing.
-  Schedule schedule;
-  std::vector<int> level = roots;
-  while (level.size() == 1 && !children[level[0]].empty()) {
-    schedule.top.push_back(level[0]);
-    level = children[level[0]];
-  }
-  // With fewer subtrees than threads, the heaviest subtree's root joins the top as well, and its
-  // children the level, until every thread can have one.
-  while (static_cast<int>(level.size()) < threads) {
-    auto heaviest = level.end();
-    for (auto it = level.begin(); it != level.end(); ++it)
-      if (!children[*it].empty() && (heaviest == level.end() || weight[*it] > weight[*heaviest])) heaviest = it;
-    if (heaviest == level.end()) break;
-    const int root = *heaviest;
-    level.erase(heaviest);
-    schedule.top.push_back(root);
-    level.insert(level.end(), children[root].begin(), children[root].end());
-  }
-  std::stable_sort(level.begin(), level.end(), [&](int a, int b) { return weight[a] > weight[b]; });
-  schedule.part.assign(threads, {});
-  std::vector<long> load(threads, 0);
-  std::vector<int> owner(n, -1), stack;
-  for (int root : level) {
-    const int t = static_cast<int>(std::min_element(load.begin(), load.end()) - load.begin());
-    load[t] += weight[root];
-    stack = {root};
-    while (!stack.empty()) {
-      const int v = stack.back();
-      stack.pop_back();
-      owner[v] = t;
-      for (int c : children[v]) stack.push_back(c);
-    }
-  }
-  for (int j = 0; j < n; ++j)
-    if (owner[j] >= 0) schedule.part[owner[j]].push_back(j);
-  std::sort(schedule.top.begin(), schedule.top.end());  // a parent comes after its children
-  return schedule;
-}
-
-// The symbolic analysis alone (METIS order, elimination tree, column counts), without the
-// numeric factorization: Eigen keeps the tree and counts in protected members.
-class SymbolicAnalysis
-    : public Eigen::SimplicialLLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::MetisOrdering<int>> {
- public:
-  explicit SymbolicAnalysis(const Eigen::SparseMatrix<double>& H) { analyzePattern(H); }
-  std::vector<int> parent() const { return {m_parent.data(), m_parent.data() + m_parent.size()}; }
-  // Nonzeros of each column of L, the diagonal included.
-  std::vector<long> entries() const {
-    std::vector<long> count(m_nonZerosPerCol.data(), m_nonZerosPerCol.data() + m_nonZerosPerCol.size());
-    for (long& c : count) ++c;
-    return count;
-  }
-};
-
-}  // namespace
-
-EliminationPlan planElimination(const Eigen::SparseMatrix<double>& H, int threads) {
-  const SymbolicAnalysis analysis(H);
-  if (analysis.info() != Eigen::Success) throw std::runtime_error("elimination plan: the pattern cannot be analyzed");
-  const int n = static_cast<int>(H.rows());
-  const int* perm = analysis.permutationP().indices().data();  // row i of H is row perm[i] of L's system
-  std::vector<int> unknownAt(n);
-  for (int i = 0; i < n; ++i) unknownAt[perm[i]] = i;
-  // A topological order of the same elimination tree, so the factor has the same fill.
-  const Schedule schedule = scheduleOf(analysis.parent(), analysis.entries(), std::max(1, threads));
-  EliminationPlan plan;
-  plan.partStart.push_back(0);
-  for (const auto& part : schedule.part) {
-    for (int j : part) plan.order.push_back(unknownAt[j]);
-    plan.partStart.push_back(static_cast<int>(plan.order.size()));
-  }
-  for (int j : schedule.top) plan.order.push_back(unknownAt[j]);
-  return plan;
-}
-
 void CholeskyPreconditioner::buildSchedule(const Eigen::SparseMatrix<double>& L) {
   // From L's full pattern, before any entry is dropped: dropping one removes a dependency between
   // unknowns, never adds one, so the tree's independent subtrees stay independent.
@@ -260,7 +160,7 @@ void CholeskyPreconditioner::buildSchedule(const Eigen::SparseMatrix<double>& L)
     if (start[j] + 1 < start[j + 1]) parent[j] = row[start[j] + 1];
     entries[j] = start[j + 1] - start[j];
   }
-  Schedule schedule = scheduleOf(parent, entries, threads_);
+  EliminationSchedule schedule = scheduleSubtrees(parent, entries, threads_);
   part_ = std::move(schedule.part);
   top_ = std::move(schedule.top);
 }

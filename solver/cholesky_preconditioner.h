@@ -8,26 +8,14 @@
 // top separator are processed on separate threads.
 #pragma once
 
+#include "elimination_plan.h"
+
 #include <Eigen/Core>
 #include <Eigen/Sparse>
 #include <memory>
 #include <vector>
 
 namespace ib {
-
-// An elimination order in which each thread's independent subtrees are contiguous. A caller that
-// numbers its unknowns in this order gets solves without permutations, and each thread's share
-// of the unknowns is one range of rows, which it can keep in all its other loops too.
-struct EliminationPlan {
-  std::vector<int> order;      // order[k]: the unknown eliminated k-th (a permutation of 0..n-1)
-  std::vector<int> partStart;  // threads + 1 entries: thread p's subtrees are positions
-                               // [partStart[p], partStart[p + 1]) of the order; the top
-                               // separator, solved serially, is [partStart.back(), n)
-};
-
-// METIS nested dissection of H's pattern (n x n, symmetric positive definite, lower triangle
-// read; only the pattern matters), split among `threads` as the solves split it.
-EliminationPlan planElimination(const Eigen::SparseMatrix<double>& H, int threads);
 
 class CholeskyPreconditioner {
  public:
