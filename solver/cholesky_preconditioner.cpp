@@ -148,19 +148,28 @@ void CholeskyPreconditioner::storePattern(const Eigen::SparseMatrix<double>& L) 
     }
 }
 
+namespace {
+
+// The elimination tree of a factor L (n x n, by columns, diagonal first): the parent of column j
+// is its first off-diagonal row, -1 for a root.
+std::vector<int> eliminationTree(const Eigen::SparseMatrix<double>& L) {
+  const int* start = L.outerIndexPtr();
+  const int* row = L.innerIndexPtr();
+  std::vector<int> parent(L.cols(), -1);
+  for (int j = 0; j < L.cols(); ++j)
+    if (start[j] + 1 < start[j + 1]) parent[j] = row[start[j] + 1];
+  return parent;
+}
+
+}  // namespace
+
 void CholeskyPreconditioner::buildSchedule(const Eigen::SparseMatrix<double>& L) {
   // From L's full pattern, before any entry is dropped: dropping one removes a dependency between
   // unknowns, never adds one, so the tree's independent subtrees stay independent.
   const int* start = L.outerIndexPtr();
-  const int* row = L.innerIndexPtr();
-  // Elimination tree: the parent of column j is the first off-diagonal row of L in column j.
-  std::vector<int> parent(n_, -1);
   std::vector<long> entries(n_);
-  for (int j = 0; j < n_; ++j) {
-    if (start[j] + 1 < start[j + 1]) parent[j] = row[start[j] + 1];
-    entries[j] = start[j + 1] - start[j];
-  }
-  EliminationSchedule schedule = scheduleSubtrees(parent, entries, threads_);
+  for (int j = 0; j < n_; ++j) entries[j] = start[j + 1] - start[j];
+  EliminationSchedule schedule = scheduleSubtrees(eliminationTree(L), entries, threads_);
   part_ = std::move(schedule.part);
   top_ = std::move(schedule.top);
 }
@@ -168,14 +177,11 @@ void CholeskyPreconditioner::buildSchedule(const Eigen::SparseMatrix<double>& L)
 void CholeskyPreconditioner::rangeSchedule(const Eigen::SparseMatrix<double>& L) {
   // The parts are only independent if no column's parent in the elimination tree lies in
   // another part: true for the pattern the plan was made from, not for one with more couplings.
-  const int* start = L.outerIndexPtr();
-  const int* row = L.innerIndexPtr();
+  const std::vector<int> parent = eliminationTree(L);
   for (int p = 0; p < threads_; ++p)
-    for (int j = partStart_[p]; j < partStart_[p + 1]; ++j) {
-      const int parent = start[j] + 1 < start[j + 1] ? row[start[j] + 1] : -1;
-      if (parent >= partStart_[p + 1] && parent < partStart_.back())
+    for (int j = partStart_[p]; j < partStart_[p + 1]; ++j)
+      if (parent[j] >= partStart_[p + 1] && parent[j] < partStart_.back())
         throw std::logic_error("Cholesky factor: H couples two threads' parts of its elimination plan");
-    }
   part_.assign(threads_, {});
   for (int p = 0; p < threads_; ++p)
     for (int j = partStart_[p]; j < partStart_[p + 1]; ++j) part_[p].push_back(j);
