@@ -125,11 +125,8 @@ Interpolator::Interpolator(ThreadLayout layout, const InterpolationParams& param
       vertexSplit_(std::move(layout.vertices)),
       triangleSplit_(std::move(layout.triangleSplit)),
       groups_(layout.mesh.vertexCount(), meshEdges(layout.mesh)),
-      factor_(vertexSplit_.threads()),
-      assembly_(layout.mesh.vertexCount()),
       anderson_(options.andersonDepth, vertexSplit_.threads()) {
   const Multimesh& mesh = layout.mesh;
-  factor_.setPreordered(layout.partStart);
   anderson_.setRowSplit(vertexSplit_, 2);  // the x and y columns of an n x 2 matrix
   const std::vector<Triangle>& triangles = layout.triangles;
   double meanArea = 0;
@@ -158,6 +155,9 @@ Interpolator::Interpolator(ThreadLayout layout, const InterpolationParams& param
   stiffnessScale_ = diagonal;
   gradientFloor_ = 1e-13 * diagonal;
   nonOverlap_ = std::make_unique<NonOverlap>(mesh, options.nonOverlapStiffness * diagonal);
+  const GlobalMatrixSources sources{deformation_.get(), cohesive_.get(), params.nonOverlap ? nonOverlap_.get() : nullptr,
+                                    options.placementStiffness * vertexWeight_, stiffnessScale_};
+  global_ = std::make_unique<GlobalMatrix>(sources, mesh.vertexCount(), std::move(layout.partStart), vertexSplit_.threads());
 }
 
 Interpolator::Frame Interpolator::makeFrame(const Eigen::VectorXd& w, const VertexSprings* springs) const {
@@ -240,72 +240,21 @@ void Interpolator::align(const Frame& frame, const State& reference, Eigen::Matr
   alignGroups(x, frame.blend, groups_, vertexSplit_);
 }
 
-const Eigen::SparseMatrix<double>& Interpolator::globalMatrix(const Frame& frame, const std::vector<char>& active) {
-  const int n = vertexCount();
-  const Eigen::VectorXd& w = frame.w;
-  const auto& triangles = deformation_->triangles();
-  const ActiveKeys keys = activeKeys(w);
-  assembly_.begin();
-  Eigen::Matrix<double, 2, 3> E;
-  E << -1, 1, 0, -1, 0, 1;
-  for (size_t t = 0; t < triangles.size(); ++t) {
-    const Eigen::Matrix3d K = E.transpose() * deformation_->metric(static_cast<int>(t), keys) * E;
-    for (int r = 0; r < 3; ++r)
-      for (int c = 0; c < 3; ++c) assembly_.add(triangles[t][r], triangles[t][c], K(r, c));
-  }
-  const auto& terms = cohesive_->terms();
-  for (size_t j = 0; j < terms.size(); ++j) {
-    const CohesivePair& p = terms[j].pair;
-    // k S [[2,1],[1,2]] S^T with S = [e_a - e_c, e_b - e_d]; zeros keep the pattern when clamped.
-    const double k = (j < active.size() && active[j]) ? w(terms[j].key) * cohesive_->springConstant(j) : 0.0;
-    const int vert[4] = {p.a, p.c, p.b, p.d};
-    const double sign[4] = {1, -1, 1, -1};
-    for (int r = 0; r < 4; ++r)
-      for (int c = 0; c < 4; ++c) {
-        const double block = (r / 2 == c / 2) ? 2.0 : 1.0;
-        assembly_.add(vert[r], vert[c], k * block * sign[r] * sign[c]);
-      }
-  }
-  for (int v = 0; v < n; ++v)
-    assembly_.add(v, v, options_.placementStiffness * vertexWeight_ + (frame.springs.size() ? frame.springs(v) : 0.0));
-  if (params_.nonOverlap)
-    for (int v : nonOverlap_->allBoundaryVertices()) assembly_.add(v, v, nonOverlap_->stiffness());
-  return assembly_.matrix();
-}
-
 void Interpolator::refactorize(const Frame& frame, const std::vector<char>& active, InterpolationResult& result) {
   const auto started = std::chrono::steady_clock::now();
-  factor_.factorize(globalMatrix(frame, active));
-  factorWeights_ = frame.w;
-  factorSprings_ = frame.springs;
-  factorValid_ = true;
-  factorActive_ = active;
+  global_->factorize({frame.w, frame.springs, active});
   ++result.factorizations;
   result.factorMilliseconds +=
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
 }
 
-// Whether H's springs still model the frame's: none on both sides, or every c_v within a fifth
-// of H's (plus a small absolute slack, so springs fading to zero do not refactorize every frame).
-bool Interpolator::springsMatch(const Eigen::VectorXd& springs) const {
-  if (springs.size() == 0 || factorSprings_.size() == 0) return springs.size() == factorSprings_.size();
-  const double slack = 0.02 * stiffnessScale_;
-  for (Eigen::Index v = 0; v < springs.size(); ++v)
-    if (std::abs(springs(v) - factorSprings_(v)) > 0.1 * (springs(v) + factorSprings_(v)) + slack) return false;
-  return true;
-}
-
 void Interpolator::ensureFactorization(const Frame& frame, const std::vector<char>& active, InterpolationResult& result) {
-  const Eigen::VectorXd& w = frame.w;
-  const bool fresh = factorValid_ && (w - factorWeights_).lpNorm<1>() <= options_.refactorDistance &&
-                     (options_.refactorDistance > 0 || w == factorWeights_) && active == factorActive_ &&
-                     springsMatch(frame.springs);
-  if (!fresh) refactorize(frame, active, result);
+  if (!global_->models({frame.w, frame.springs, active}, options_.refactorDistance)) refactorize(frame, active, result);
 }
 
 void Interpolator::forgetHistory() {
   anderson_.reset();
-  factorValid_ = false;
+  global_->invalidate();
 }
 
 EnergyEvaluation Interpolator::evaluate(const Eigen::MatrixX2d& x, const Eigen::VectorXd& w) const {
@@ -331,7 +280,7 @@ Interpolator::Step Interpolator::step(const Frame& frame, const State& s, State&
     return candidate.energy <= s.energy + slack;
   };
   // The plain local-global step G(x) = x - H^{-1} g, placed rigidly.
-  factor_.step(s.x, s.gradient, plain);
+  global_->factor().step(s.x, s.gradient, plain);
   if (!frame.springs.size()) align(frame, s, plain);
   candidate.x.resize(vertexCount(), 2);
   anderson_.next(flat(plain), flat(s.gradient), flatMutable(candidate.x));
@@ -341,7 +290,7 @@ Interpolator::Step Interpolator::step(const Frame& frame, const State& s, State&
     candidate.x = plain;
     if (tryCandidate()) return Step::kAccepted;
   }
-  if (s.active != factorActive_) {
+  if (s.active != global_->active()) {
     // Cohesive pairs engaged or let go since H was built: H no longer models the energy.
     refactorize(frame, s.active, result);
     anderson_.reset();

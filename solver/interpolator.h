@@ -26,10 +26,9 @@
 #pragma once
 
 #include "anderson.h"
-#include "cholesky_preconditioner.h"
 #include "cohesive_energy.h"
 #include "deformation_energy.h"
-#include "fixed_pattern.h"
+#include "global_matrix.h"
 #include "multimesh.h"
 #include "non_overlap.h"
 #include "placement.h"
@@ -124,7 +123,7 @@ class Interpolator {
   int keyCount() const { return static_cast<int>(keys_.size()); }
   int vertexCount() const { return static_cast<int>(keys_.front().rows()); }
   int threads() const { return vertexSplit_.threads(); }
-  long factorNonZeros() const { return factor_.factorNonZeros(); }
+  long factorNonZeros() const { return global_->factor().factorNonZeros(); }
 
  private:
   struct Frame;
@@ -141,11 +140,10 @@ class Interpolator {
   // step. On kAccepted the new iterate is in candidate; plain is scratch.
   enum class Step { kAccepted, kRefactorized, kStalled };
   Step step(const Frame& frame, const State& s, State& candidate, Eigen::MatrixX2d& plain, InterpolationResult& result);
-  bool springsMatch(const Eigen::VectorXd& springs) const;
+  // Factorizes H for the frame with these active cohesive pairs, unless the factor still models
+  // it (ensureFactorization), or always (refactorize); counted and timed in result.
   void ensureFactorization(const Frame& frame, const std::vector<char>& active, InterpolationResult& result);
   void refactorize(const Frame& frame, const std::vector<char>& active, InterpolationResult& result);
-  // H for the frame (n x n, lower triangle), assembled into assembly_.
-  const Eigen::SparseMatrix<double>& globalMatrix(const Frame& frame, const std::vector<char>& active);
 
   InterpolationParams params_;
   SolverOptions options_;
@@ -161,13 +159,8 @@ class Interpolator {
   std::unique_ptr<NonOverlap> nonOverlap_;  // always built; used when params_.nonOverlap
   PlacementGroups groups_;
   std::vector<std::pair<int, int>> groupLinks_;  // the links groups_ was last built from
-  CholeskyPreconditioner factor_;
-  FixedPatternAssembly assembly_;          // H's entries, in the same order at every refactorization
+  std::unique_ptr<GlobalMatrix> global_;   // H and its factor; built from the energies above
   AndersonAcceleration anderson_;          // history kept across frames
-  bool factorValid_ = false;               // H factorized for factorWeights_, factorActive_, factorSprings_
-  Eigen::VectorXd factorWeights_;
-  Eigen::VectorXd factorSprings_;          // c_v in H (empty: none)
-  std::vector<char> factorActive_;
   double gradientFloor_ = 0;               // absolute |g|_inf below which a start is converged
   double stiffnessScale_ = 0;              // see stiffnessScale()
 };
