@@ -6,8 +6,8 @@
 // Iteration. The local step (rotations per triangle and key, cohesive directions and clamping,
 // non-overlap targets) runs fused with the evaluation of the energy E and its gradient g. The
 // global step is x <- x - H^{-1} g with H = sum_t E^T M_t(w) E + cohesive springs + mu M, an n x n
-// matrix shared by x and y. With H the exact quadratic of the current frame this is the
-// classic global solve. H is refactorized only when w has moved by more than
+// matrix shared by x and y (global_matrix.h). With H the current frame's exact quadratic this is
+// the classic global solve. H is refactorized only when w has moved by more than
 // SolverOptions::refactorDistance (L1) since the last factorization, when the set of active
 // cohesive pairs at the start of a frame differs from H's, or when a step fails while it
 // differs (pairs engaged or let go mid-solve). Otherwise it serves as a fixed preconditioner:
