@@ -28,9 +28,14 @@ constexpr const char* kBenchUsage =
     "\n"
     "Interpolation solver on strips built in code (rest, 180-degree bend, stretch, wave keys).\n"
     "One JSON line per (vertices, keys) case:\n"
-    "  ms_per_iter         one accelerated iteration (local step + global solve), over the sweep\n"
-    "                      below, factorizations excluded (null if no frame needed one)\n"
+    "  ms_per_iter         the sweep below per iteration, factorizations excluded: one accelerated\n"
+    "                      iteration (local step + global solve) plus its share of each frame's\n"
+    "                      setup and start evaluation and of rejected candidates (null if no\n"
+    "                      frame needed an iteration)\n"
     "  iters_to_converge   mean iterations per warm-started frame to relative residual 1e-3\n"
+    "  evaluations_per_frame\n"
+    "                      mean local steps (energy and gradient) per frame: the start's, one per\n"
+    "                      iteration and one per rejected accelerated candidate\n"
     "  ms_per_frame        mean wall time of those frames (each at a new w), factorizations included;\n"
     "                      each starts from the last two frames extrapolated (WarmStartPredictor)\n"
     "  iters_to_energy_1e-3 / plain_iters_to_energy_1e-3\n"
@@ -105,7 +110,8 @@ void progress(const std::string& text) {
 
 // One warm-started sweep of `frames` frames after a cold solve at s = 0.
 struct Sweep {
-  double msPerFrame = 0, msPerIter = 0, maxMs = 0, itersPerFrame = 0, firstSolveMs = 0, factorMs = 0;
+  double msPerFrame = 0, msPerIter = 0, maxMs = 0, itersPerFrame = 0, evaluationsPerFrame = 0, firstSolveMs = 0,
+         factorMs = 0;
   double referenceMsPerIter = 0;  // the yardstick, timed right after the sweep
   int factorizations = 0, unconverged = 0, threads = 0;
   long factorNonZeros = 0;
@@ -121,7 +127,7 @@ Sweep runSweep(const Multimesh& mesh, const InterpolationParams& params, const S
   warmStart.remember(sweepWeights(keys, 0), previous.x);
   out.firstSolveMs = millisecondsSince(started);
   double totalMs = 0, factorMs = 0;
-  long iterations = 0;
+  long iterations = 0, evaluations = 0;
   for (int f = 1; f <= frames; ++f) {
     progress(label + ": frame " + std::to_string(f) + "/" + std::to_string(frames));
     const Eigen::VectorXd w = sweepWeights(keys, double(f) / frames);
@@ -134,12 +140,14 @@ Sweep runSweep(const Multimesh& mesh, const InterpolationParams& params, const S
     factorMs += previous.factorMilliseconds;
     out.maxMs = std::max(out.maxMs, frameMs);
     iterations += previous.iterations;
+    evaluations += previous.evaluations;
     out.factorizations += previous.factorizations;
     out.unconverged += !previous.converged;
   }
   out.msPerFrame = totalMs / frames;
   out.msPerIter = (totalMs - factorMs) / std::max(1L, iterations);
   out.itersPerFrame = double(iterations) / frames;
+  out.evaluationsPerFrame = double(evaluations) / frames;
   out.factorMs = out.factorizations ? factorMs / out.factorizations : 0.0;
   out.threads = solver.threads();
   out.factorNonZeros = solver.factorNonZeros();
@@ -218,6 +226,7 @@ nlohmann::json benchCase(int vertices, int keys, int frames, int repeats, int th
                         {"keys", keys},
                         {"ms_per_iter", median(runs, [](const Sweep& s) { return s.msPerIter; })},
                         {"iters_to_converge", any.itersPerFrame},
+                        {"evaluations_per_frame", any.evaluationsPerFrame},
                         {"ms_per_frame", median(runs, [](const Sweep& s) { return s.msPerFrame; })},
                         {"threads", any.threads},
                         {"frames", frames},
