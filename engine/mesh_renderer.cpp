@@ -16,6 +16,7 @@ namespace {
 constexpr float kWireframe[4] = {0.25f, 0.4f, 0.6f, 0.7f};    // premultiplied: steel blue, 70% opaque
 constexpr float kCohesive[4] = {0.9f, 0.1f, 0.1f, 1.0f};       // red
 constexpr float kFeature[4] = {0.1f, 0.3f, 0.95f, 1.0f};       // blue
+constexpr int kArtworkFloats = sizeof(vk::ArtworkVertex) / sizeof(float);
 constexpr int kSquareCorners[6][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, -1}, {1, 1}, {-1, 1}};  // two triangles
 
 // clip = p * view.xy + view.zw maps the view box onto [-1, 1]^2 (Vulkan's y points down, like drawings').
@@ -53,6 +54,7 @@ MeshRenderer::MeshRenderer(const vk::VulkanContext& context, VkCommandPool pool,
       indexCount_(static_cast<uint32_t>(3 * mesh.triangles.size())),
       edges_(mesh.edges),
       cohesiveEdges_(mesh.cohesiveEdges),
+      seams_(mesh.seams),
       features_(mesh.features) {
   if (keyCount_ == 0 || vertexCount_ == 0 || mesh.triangles.empty()) throw InputError("render: the mesh is empty");
   VkDevice device = context.device();
@@ -100,7 +102,7 @@ MeshRenderer::MeshRenderer(const vk::VulkanContext& context, VkCommandPool pool,
   size_t cohesive = 0;
   for (const auto& c : cohesiveEdges_) cohesive += c.size();
   overlayCapacity_ = 2 * (edges_.size() + cohesive) + 6 * features_.size();
-  const VkDeviceSize bytes = (1 + kMaxOnionSkins) * static_cast<VkDeviceSize>(vertexCount_) * 2 * sizeof(float) +
+  const VkDeviceSize bytes = (1 + kMaxOnionSkins) * static_cast<VkDeviceSize>(vertexCount_) * sizeof(vk::ArtworkVertex) +
                              std::max<VkDeviceSize>(1, overlayCapacity_) * sizeof(vk::OverlayVertex);
   for (int s = 0; s < slots; ++s)
     streams_.push_back(vk::createBuffer(context, bytes, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, true, "a vertex stream buffer"));
@@ -127,17 +129,19 @@ MeshRenderer::Active MeshRenderer::activeKeys(const Eigen::VectorXd& weights) co
   return active;
 }
 
-void MeshRenderer::drawArtwork(VkCommandBuffer cmd, const float view[4], const Eigen::MatrixX2d& x,
+void MeshRenderer::drawArtwork(VkCommandBuffer cmd, const float view[4], double pixelsPerUnit, const Eigen::MatrixX2d& x,
                                const Eigen::VectorXd& weights, const float tint[4], int slot, VkDeviceSize& offset) {
   if (x.rows() != vertexCount_)
     throw InputError("render: " + std::to_string(x.rows()) + " positions for " + std::to_string(vertexCount_) + " vertices");
   if (!x.allFinite()) throw InputError("render: positions are not finite");
   const Active active = activeKeys(weights);
   if (active.count == 0) return;  // nothing has weight: nothing to draw
+  const SeamWeld weld = weldSeams(x, seams_, pixelsPerUnit);
   auto* out = reinterpret_cast<float*>(static_cast<char*>(streams_[slot].mapped) + offset);
   for (int v = 0; v < vertexCount_; ++v) {
-    out[2 * v] = static_cast<float>(x(v, 0));
-    out[2 * v + 1] = static_cast<float>(x(v, 1));
+    out[kArtworkFloats * v] = static_cast<float>(weld.positions(v, 0));
+    out[kArtworkFloats * v + 1] = static_cast<float>(weld.positions(v, 1));
+    out[kArtworkFloats * v + 2] = weld.closure[v];
   }
   vk::ArtworkPush push{};
   std::copy(view, view + 4, push.view);
@@ -154,7 +158,7 @@ void MeshRenderer::drawArtwork(VkCommandBuffer cmd, const float view[4], const E
   vkCmdBindVertexBuffers(cmd, 0, 1, &buffer, &offset);
   vkCmdBindIndexBuffer(cmd, indices_.buffer.get(), 0, VK_INDEX_TYPE_UINT32);
   vkCmdDrawIndexed(cmd, indexCount_, 1, 0, 0, 0);
-  offset += static_cast<VkDeviceSize>(vertexCount_) * 2 * sizeof(float);
+  offset += static_cast<VkDeviceSize>(vertexCount_) * sizeof(vk::ArtworkVertex);
 }
 
 void MeshRenderer::drawOverlays(VkCommandBuffer cmd, const float view[4], VkExtent2D extent, const FrameDraw& frame, int slot,
@@ -206,16 +210,19 @@ void MeshRenderer::record(VkCommandBuffer cmd, int slot, VkExtent2D extent, cons
   if (!(frame.view.x1 > frame.view.x0 && frame.view.y1 > frame.view.y0)) throw InputError("render: the view box is empty");
   float view[4];
   viewTransform(frame.view, view);
+  // Target pixels per drawing pixel (the larger of x's and y's when the view stretches one).
+  const double pixelsPerUnit = std::max(extent.width / (frame.view.x1 - frame.view.x0),
+                                        extent.height / (frame.view.y1 - frame.view.y0));
   VkDeviceSize offset = 0;
   for (const OnionSkin& skin : frame.onion) {
     if (!skin.positions) throw InputError("render: an onion skin has no positions");
     const float o = std::clamp(skin.opacity, 0.0f, 1.0f);
     const float tint[4] = {skin.tint[0] * o, skin.tint[1] * o, skin.tint[2] * o, o};
-    drawArtwork(cmd, view, *skin.positions, skin.weights, tint, slot, offset);
+    drawArtwork(cmd, view, pixelsPerUnit, *skin.positions, skin.weights, tint, slot, offset);
   }
   const float plain[4] = {1, 1, 1, 1};
-  drawArtwork(cmd, view, *frame.positions, frame.weights, plain, slot, offset);
-  offset = (1 + kMaxOnionSkins) * static_cast<VkDeviceSize>(vertexCount_) * 2 * sizeof(float);
+  drawArtwork(cmd, view, pixelsPerUnit, *frame.positions, frame.weights, plain, slot, offset);
+  offset = (1 + kMaxOnionSkins) * static_cast<VkDeviceSize>(vertexCount_) * sizeof(vk::ArtworkVertex);
   drawOverlays(cmd, view, extent, frame, slot, offset);
 }
 

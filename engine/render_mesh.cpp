@@ -9,6 +9,40 @@
 
 namespace ib::render {
 
+namespace {
+
+Seams seamsOf(const Multimesh& mesh) {
+  std::set<std::array<int, 4>> pairs;
+  std::set<Edge> partners;
+  for (int k = 0; k < mesh.keyCount(); ++k)
+    for (const CohesivePair& p : mesh.cohesivePairs(k)) {
+      pairs.insert({p.a, p.b, p.c, p.d});
+      for (const Edge& e : {Edge{p.a, p.c}, Edge{p.b, p.d}})
+        if (e[0] != e[1]) partners.insert({std::min(e[0], e[1]), std::max(e[0], e[1])});
+    }
+  Seams out;
+  std::vector<char> onCut(mesh.vertexCount(), 0);
+  for (const std::array<int, 4>& p : pairs) {
+    out.pairs.push_back({p[0], p[1], p[2], p[3]});
+    for (int v : p) onCut[v] = 1;
+  }
+  out.partners.assign(partners.begin(), partners.end());
+  std::set<Edge> ring;
+  for (const Triangle& t : mesh.triangles())
+    for (int e = 0; e < 3; ++e)
+      for (const auto& [v, w] : {std::pair{t[e], t[(e + 1) % 3]}, std::pair{t[(e + 1) % 3], t[e]}})
+        if (!onCut[v] && onCut[w]) ring.insert({v, w});
+  out.ring.assign(ring.begin(), ring.end());
+  return out;
+}
+
+// 1 at gaps (target pixels) up to `glued`, 0 from `open` on, linear in between.
+double closureAt(double gap, const SeamWeldOptions& options) {
+  return std::clamp((options.open - gap) / (options.open - options.glued), 0.0, 1.0);
+}
+
+}  // namespace
+
 RenderMesh renderMeshOf(const Multimesh& mesh, std::vector<RgbaImage> artwork, std::vector<int> features) {
   if (static_cast<int>(artwork.size()) != mesh.keyCount())
     throw InputError("render: " + std::to_string(artwork.size()) + " drawings for " + std::to_string(mesh.keyCount()) +
@@ -30,6 +64,7 @@ RenderMesh renderMeshOf(const Multimesh& mesh, std::vector<RgbaImage> artwork, s
     }
     out.cohesiveEdges.push_back(std::move(cohesive));
   }
+  out.seams = seamsOf(mesh);
   std::set<Edge> edges;
   for (const Triangle& t : out.triangles)
     for (int e = 0; e < 3; ++e) edges.insert({std::min(t[e], t[(e + 1) % 3]), std::max(t[e], t[(e + 1) % 3])});
@@ -38,6 +73,33 @@ RenderMesh renderMeshOf(const Multimesh& mesh, std::vector<RgbaImage> artwork, s
     if (f < 0 || f >= out.vertexCount) throw InputError("render: feature vertex " + std::to_string(f) + " is not in the mesh");
   out.features = std::move(features);
   out.artwork = std::move(artwork);
+  return out;
+}
+
+SeamWeld weldSeams(const Eigen::MatrixX2d& x, const Seams& seams, double pixelsPerUnit, const SeamWeldOptions& options) {
+  if (!(options.glued >= 0 && options.open > options.glued))
+    throw InputError("render: seam welding needs 0 <= glued < open pixels");
+  if (!(pixelsPerUnit > 0 && std::isfinite(pixelsPerUnit))) throw InputError("render: seam welding needs a positive scale");
+  const Eigen::Index n = x.rows();
+  SeamWeld out{x, std::vector<float>(n, 0.0f)};
+  for (const CohesivePair& p : seams.pairs) {
+    const double gap = pixelsPerUnit * std::max((x.row(p.a) - x.row(p.c)).norm(), (x.row(p.b) - x.row(p.d)).norm());
+    const float c = static_cast<float>(closureAt(gap, options));
+    for (int v : {p.a, p.b, p.c, p.d}) out.closure[v] = std::max(out.closure[v], c);
+  }
+  for (const Edge& e : seams.ring) out.closure[e[0]] = std::max(out.closure[e[0]], out.closure[e[1]]);
+  Eigen::MatrixX2d pull = Eigen::MatrixX2d::Zero(n, 2);  // sum_v c_uv (v - u) per vertex u
+  Eigen::VectorXd pulls = Eigen::VectorXd::Zero(n);       // sum_v c_uv
+  for (const Edge& e : seams.partners) {
+    const Eigen::RowVector2d d = x.row(e[1]) - x.row(e[0]);
+    const double c = closureAt(pixelsPerUnit * d.norm(), options);
+    pull.row(e[0]) += c * d;
+    pull.row(e[1]) -= c * d;
+    pulls[e[0]] += c;
+    pulls[e[1]] += c;
+  }
+  for (Eigen::Index v = 0; v < n; ++v)
+    if (pulls[v] > 0) out.positions.row(v) += pull.row(v) / (1 + pulls[v]);
   return out;
 }
 

@@ -14,6 +14,13 @@ namespace ib::render {
 
 using Edge = std::array<int, 2>;
 
+// The cuts of a multimesh: the cohesive pairs of all keys, and the vertex pairs they collocate.
+struct Seams {
+  std::vector<CohesivePair> pairs;  // every key's C_i, each pair once
+  std::vector<Edge> partners;       // {a, c} and {b, d} of every pair where the two differ, each once
+  std::vector<Edge> ring;           // {v, u}: v off the cuts shares a triangle with u on one
+};
+
 struct RenderMesh {
   int vertexCount = 0;
   std::vector<Triangle> triangles;               // t x 3 vertex indices (drawn without culling)
@@ -21,6 +28,7 @@ struct RenderMesh {
   std::vector<RgbaImage> artwork;                // [key]: the drawing, straight alpha
   std::vector<Edge> edges;                       // every mesh edge once (wireframe)
   std::vector<std::vector<Edge>> cohesiveEdges;  // [key]: both edges of each of C_i's pairs
+  Seams seams;                                   // every key's cohesive pairs, for weldSeams
   std::vector<int> features;                     // vertices marked as features
 };
 
@@ -28,6 +36,36 @@ struct RenderMesh {
 // `features` are vertex indices (may be empty). Throws InputError when the artwork count does not
 // match the keys or an image is empty.
 RenderMesh renderMeshOf(const Multimesh& mesh, std::vector<RgbaImage> artwork, std::vector<int> features = {});
+
+// Where the solver glues a cut, its two sides lie within a small fraction of a pixel of each other,
+// and the keys that draw the cut open have antialiased, partly transparent texels along it. Drawn
+// as they are, both would show as a hairline across a shape that is whole: MSAA samples falling
+// in the sliver between the sides, and the open keys' alpha blended in. weldSeams closes gaps
+// narrower than a pixel and says, per vertex, how closed its cut is, so that the artwork shader
+// takes the opacity across it from the keys that draw it whole (shaders/artwork.frag).
+// Distances are in target pixels, so a gap the picture can show is never welded shut, at any zoom.
+struct SeamWeldOptions {
+  double glued = 0.5;  // target pixels: seam partners at most this far apart are welded (closure 1)
+  double open = 1.5;   // target pixels: partners this far apart or more are left alone (closure 0)
+};
+
+struct SeamWeld {
+  Eigen::MatrixX2d positions;  // n x 2, in x's units: x with glued partners moved together
+  std::vector<float> closure;  // n: 1 where a vertex's cut is glued, 0 away from cuts and where it is open
+};
+
+// A pair's closure is c = clamp((open - d) / (open - glued), 0, 1), where d is the larger of its
+// two end gaps |x_a - x_c| and |x_b - x_d|; a vertex's closure is the largest of its pairs' (so the
+// tip of a cut, where a == c, gets its pair's), and a vertex next to a cut takes the largest of its
+// neighbours' on it: the triangles along a glued cut have closure 1 throughout (an open key's
+// partly transparent texels can reach a few pixels into them where its map stretches), and it
+// falls to 0 across the next ring of triangles. Welding: each partner pair {u, v} has c_uv from its
+// own gap, and u moves to u + sum_v c_uv (v - u) / (1 + sum_v c_uv): a glued pair meets at its
+// midpoint, a glued group of mutual partners at its centroid, and a lone pair between the
+// thresholds narrows continuously to d (1 - c) / (1 + c), which still grows with d. x is in drawing pixels, shown at
+// `pixelsPerUnit` target pixels per drawing pixel (> 0). Throws InputError unless 0 <= glued < open.
+SeamWeld weldSeams(const Eigen::MatrixX2d& x, const Seams& seams, double pixelsPerUnit,
+                   const SeamWeldOptions& options = {});
 
 // The rectangle of drawing pixels shown on the target, x0 < x1 and y0 < y1 (y down).
 struct ViewBox {

@@ -13,6 +13,7 @@
 #include <overlay_vert.h>
 
 #include <array>
+#include <cstddef>
 #include <vector>
 
 namespace ib::vk {
@@ -146,13 +147,16 @@ RendererPipelines createRendererPipelines(VkDevice device, VkRenderPass pass, Vk
   const VkDescriptorSetLayout set = out.setLayout.get();
   out.artworkLayout = createLayout(device, &set, sizeof(ArtworkPush), VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT);
   out.overlayLayout = createLayout(device, nullptr, 4 * sizeof(float), VK_SHADER_STAGE_VERTEX_BIT);
+  const std::vector<VkVertexInputAttributeDescription> artworkInput = {
+      {0, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(ArtworkVertex, position)},
+      {1, 0, VK_FORMAT_R32_SFLOAT, offsetof(ArtworkVertex, seamClosure)}};
   const PipelineSpec artwork[3] = {
       {artwork2_vert, sizeof(artwork2_vert), artwork2_frag, sizeof(artwork2_frag), "artwork (2 keys)",
-       VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST, {{0, 0, VK_FORMAT_R32G32_SFLOAT, 0}}, 2 * sizeof(float)},
+       VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST, artworkInput, sizeof(ArtworkVertex)},
       {artwork4_vert, sizeof(artwork4_vert), artwork4_frag, sizeof(artwork4_frag), "artwork (4 keys)",
-       VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST, {{0, 0, VK_FORMAT_R32G32_SFLOAT, 0}}, 2 * sizeof(float)},
+       VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST, artworkInput, sizeof(ArtworkVertex)},
       {artwork8_vert, sizeof(artwork8_vert), artwork8_frag, sizeof(artwork8_frag), "artwork (8 keys)",
-       VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST, {{0, 0, VK_FORMAT_R32G32_SFLOAT, 0}}, 2 * sizeof(float)}};
+       VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST, artworkInput, sizeof(ArtworkVertex)}};
   for (int v = 0; v < 3; ++v) out.artwork[v] = createPipeline(device, pass, samples, out.artworkLayout.get(), artwork[v]);
   PipelineSpec overlay{overlay_vert, sizeof(overlay_vert), overlay_frag, sizeof(overlay_frag), "overlay lines",
                        VK_PRIMITIVE_TOPOLOGY_LINE_LIST,

@@ -1,5 +1,6 @@
 // The renderer's graphics pipelines for one render pass and sample count:
-// - artwork: triangle list, vertex binding 0 = vec2 position (8 bytes), descriptor set 0 =
+// - artwork: triangle list, vertex binding 0 = ArtworkVertex (vec2 position + float seam closure,
+//   12 bytes), descriptor set 0 =
 //   {0: the artwork's sampler2DArray, 1: the per-key UVs storage buffer}, push constants ArtworkPush;
 // - overlay lines and overlay triangles: vertex binding 0 = vec2 position + vec4 premultiplied colour
 //   (24 bytes), push constants {vec4 view}.
@@ -23,6 +24,11 @@ struct ArtworkPush {
   int keyCount;      // m
 };
 static_assert(sizeof(ArtworkPush) == 104, "ArtworkPush must match shaders/artwork_push.glsl");
+
+struct ArtworkVertex {
+  float position[2];  // drawing pixels
+  float seamClosure;  // 0..1, see render::weldSeams
+};
 
 struct OverlayVertex {
   float position[2];  // drawing pixels

@@ -7,13 +7,16 @@
 // Built three times, MAX_ACTIVE = 2, 4 and 8 (shaders/CMakeLists.txt): fewer interpolated UVs per
 // fragment when fewer keys are in play (about 1.4x faster on lavapipe for two keys than eight).
 
-layout(location = 0) in vec2 position;  // drawing pixels, y down
+layout(location = 0) in vec2 position;     // drawing pixels, y down
+layout(location = 1) in float seamClosure;  // 1 on a glued cut, 0 away from cuts (render::weldSeams)
 layout(std430, set = 0, binding = 1) readonly buffer KeyUVs { vec2 keyUV[]; };  // [vertex * keyCount + key]
 
 layout(location = 0) out vec2 uv[MAX_ACTIVE];
+layout(location = MAX_ACTIVE) out float seam;
 
 void main() {
   for (int k = 0; k < MAX_ACTIVE; ++k)
     uv[k] = k < draw.activeCount ? keyUV[gl_VertexIndex * draw.keyCount + activeLayer(k)] : vec2(0.0);
+  seam = seamClosure;
   gl_Position = vec4(position * draw.view.xy + draw.view.zw, 0.0, 1.0);
 }

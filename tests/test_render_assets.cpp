@@ -1,4 +1,5 @@
 #include "example_scenes.h"
+#include "interpolator.h"
 #include "multimesh_builder.h"
 #include "offscreen_renderer.h"
 #include "render_fixtures.h"
@@ -22,30 +23,47 @@ bool neighbourhood(const RgbaImage& image, int x, int y, int radius, Test alphaT
   return true;
 }
 
+// A bundled scene built (default options) with its drawings and one frame's target for key k.
+struct BundledScene {
+  Scene scene;
+  Multimesh mesh;
+  std::vector<RgbaImage> drawings;  // [key]
+
+  explicit BundledScene(const std::string& file)
+      : scene(loadScene(file)), mesh(*buildMultimesh(scene, MultimeshBuildOptions{}).multimesh) {
+    for (const KeySpec& key : scene.keys) drawings.push_back(readPng(key.drawing));
+  }
+  // Key k's drawing size, showing its drawing's rectangle.
+  OffscreenOptions target(int k) const {
+    OffscreenOptions options;
+    options.width = drawings[k].width;
+    options.height = drawings[k].height;
+    return options;
+  }
+  FrameDraw frame(int k, const Eigen::MatrixX2d& x, const Eigen::VectorXd& w) const {
+    FrameDraw out;
+    out.positions = &x;
+    out.weights = w;
+    out.view = {0, 0, double(drawings[k].width), double(drawings[k].height)};
+    return out;
+  }
+};
+
 }  // namespace
 
 TEST_CASE("render: every bundled key renders as its drawing at its weight e_i (2 px from the outline)") {
   const vk::VulkanContext context = ib::test::validatedContext();
   int keysChecked = 0;
   for (const std::string& file : ::test::bundledSceneFiles(INBETWEEN_ASSETS)) {
-    const Scene scene = loadScene(file);
-    const BuiltScene built = buildMultimesh(scene, MultimeshBuildOptions{});
-    const Multimesh& mesh = *built.multimesh;
-    std::vector<RgbaImage> drawings;
-    for (const KeySpec& key : scene.keys) drawings.push_back(readPng(key.drawing));
-    const RenderMesh renderMesh = renderMeshOf(mesh, drawings);
+    const BundledScene bundled(file);
+    const Scene& scene = bundled.scene;
+    const Multimesh& mesh = bundled.mesh;
+    const RenderMesh renderMesh = renderMeshOf(mesh, bundled.drawings);
     for (int k = 0; k < mesh.keyCount(); ++k) {
-      const RgbaImage& drawing = drawings[k];
-      OffscreenOptions options;
-      options.width = drawing.width;
-      options.height = drawing.height;
-      OffscreenRenderer renderer(context, renderMesh, options);
+      const RgbaImage& drawing = bundled.drawings[k];
       const Eigen::MatrixX2d x = mesh.keyPositions(k);
-      FrameDraw frame;
-      frame.positions = &x;
-      frame.weights = Eigen::VectorXd::Unit(mesh.keyCount(), k);
-      frame.view = {0, 0, double(drawing.width), double(drawing.height)};
-      const RgbaImage image = renderer.render(frame);
+      const RgbaImage image =
+          OffscreenRenderer(context, renderMesh, bundled.target(k)).render(bundled.frame(k, x, Eigen::VectorXd::Unit(mesh.keyCount(), k)));
       int inside = 0, outside = 0, wrongInside = 0, wrongOutside = 0;
       for (int py = 0; py < drawing.height; ++py)
         for (int px = 0; px < drawing.width; ++px) {
@@ -70,5 +88,55 @@ TEST_CASE("render: every bundled key renders as its drawing at its weight e_i (2
     }
   }
   CHECK(keysChecked >= 10);
+  CHECK(context.validationMessages().empty());
+}
+
+TEST_CASE("render: every bundled cut glued in an inbetween shows no seam (alpha >= 240, 3 px inside the mesh)") {
+  const vk::VulkanContext context = ib::test::validatedContext();
+  int inbetweensChecked = 0;
+  for (const std::string& file : ::test::bundledSceneFiles(INBETWEEN_ASSETS)) {
+    const BundledScene bundled(file);
+    const Scene& scene = bundled.scene;
+    const Multimesh& mesh = bundled.mesh;
+    const int m = mesh.keyCount();
+    std::vector<RgbaImage> blank;  // opaque white: what the mesh covers
+    for (const RgbaImage& d : bundled.drawings)
+      blank.push_back(ib::test::paintedImage(d.width, d.height, [](int, int) { return std::array<uint8_t, 4>{255, 255, 255, 255}; }));
+    const RenderMesh art = renderMeshOf(mesh, bundled.drawings), coverage = renderMeshOf(mesh, blank);
+    Interpolator interpolator(mesh, interpolationParams(scene.solver), SolverOptions{});
+    for (int k = 0; k < m; ++k) {
+      if (mesh.cohesivePairs(k).empty()) continue;
+      // Key k, whose cuts are glued, with as much of the keys that draw them open as keeps them
+      // glued (gaps under a quarter pixel): the first of w_k = 0.5, 0.6, .., 0.9 that does.
+      const Eigen::MatrixX2d glued = mesh.keyPositions(k);
+      Eigen::VectorXd w;
+      Eigen::MatrixX2d x;
+      double widest = INFINITY;
+      for (double wk = 0.5; wk < 0.95 && widest >= 0.25; wk += 0.1) {
+        w = Eigen::VectorXd::Constant(m, (1 - wk) / (m - 1));
+        w[k] = wk;
+        x = interpolator.solve(w, &glued).x;  // from key k, as a stream leaving it would
+        widest = 0;
+        for (const Edge& e : art.seams.partners) widest = std::max(widest, (x.row(e[0]) - x.row(e[1])).norm());
+      }
+      INFO(file << " at w = " << w.transpose() << ": cut gaps up to " << widest << " px");
+      REQUIRE(widest < 0.25);
+      const RgbaImage image = OffscreenRenderer(context, art, bundled.target(k)).render(bundled.frame(k, x, w));
+      const RgbaImage covered = OffscreenRenderer(context, coverage, bundled.target(k)).render(bundled.frame(k, x, w));
+      int inside = 0, seeThrough = 0, lowest = 255;
+      for (int py = 0; py < image.height; ++py)
+        for (int px = 0; px < image.width; ++px)
+          if (neighbourhood(covered, px, py, 3, [](uint8_t a) { return a == 255; })) {
+            ++inside;
+            seeThrough += image.at(px, py)[3] < 240;  // a plain blend leaves 171-232 here
+            lowest = std::min<int>(lowest, image.at(px, py)[3]);
+          }
+      INFO(seeThrough << " of " << inside << " pixels 3 px inside the mesh under alpha 240, lowest " << lowest);
+      CHECK(inside > 100);
+      CHECK(seeThrough == 0);
+      ++inbetweensChecked;
+    }
+  }
+  CHECK(inbetweensChecked >= 3);
   CHECK(context.validationMessages().empty());
 }
