@@ -1,9 +1,9 @@
 // Draws a RenderMesh at the current positions with every active key's artwork blended by the
 // weights (premultiplied alpha), then the overlays, into a render pass created by
 // createColorRenderPass. Heavy setup once (artwork upload, UVs, indices, pipelines); per frame only
-// positions (with their seam closure, see weldSeams) and overlay vertices are written, into the
-// stream buffer of the frame's slot, so the GPU keeps drawing earlier slots meanwhile (libigl's
-// precompute-then-solve, for pixels).
+// positions (welded along glued cuts, with each vertex's closure: weldSeams) and overlay vertices
+// are written, into the stream buffer of the frame's slot, so the GPU keeps drawing earlier slots
+// meanwhile (libigl's precompute-then-solve, for pixels).
 #pragma once
 
 #include "gpu_resources.h"
@@ -36,8 +36,9 @@ class MeshRenderer {
     int layers[kMaxActiveKeys] = {};
   };
   Active activeKeys(const Eigen::VectorXd& weights) const;
-  void drawArtwork(VkCommandBuffer cmd, const float view[4], double pixelsPerUnit, const Eigen::MatrixX2d& x, const Eigen::VectorXd& weights,
-                   const float tint[4], int slot, VkDeviceSize& offset);
+  // pixelsPerUnit: target pixels per drawing pixel, for weldSeams.
+  void drawArtwork(VkCommandBuffer cmd, const float view[4], double pixelsPerUnit, const Eigen::MatrixX2d& x,
+                   const Eigen::VectorXd& weights, const float tint[4], int slot, VkDeviceSize& offset);
   void drawOverlays(VkCommandBuffer cmd, const float view[4], VkExtent2D extent, const FrameDraw& frame, int slot,
                     VkDeviceSize offset);
 

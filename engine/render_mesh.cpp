@@ -82,6 +82,7 @@ SeamWeld weldSeams(const Eigen::MatrixX2d& x, const Seams& seams, double pixelsP
   if (!(pixelsPerUnit > 0 && std::isfinite(pixelsPerUnit))) throw InputError("render: seam welding needs a positive scale");
   const Eigen::Index n = x.rows();
   SeamWeld out{x, std::vector<float>(n, 0.0f)};
+  if (seams.pairs.empty()) return out;
   for (const CohesivePair& p : seams.pairs) {
     const double gap = pixelsPerUnit * std::max((x.row(p.a) - x.row(p.c)).norm(), (x.row(p.b) - x.row(p.d)).norm());
     const float c = static_cast<float>(closureAt(gap, options));

@@ -62,8 +62,9 @@ struct SeamWeld {
 // falls to 0 across the next ring of triangles. Welding: each partner pair {u, v} has c_uv from its
 // own gap, and u moves to u + sum_v c_uv (v - u) / (1 + sum_v c_uv): a glued pair meets at its
 // midpoint, a glued group of mutual partners at its centroid, and a lone pair between the
-// thresholds narrows continuously to d (1 - c) / (1 + c), which still grows with d. x is in drawing pixels, shown at
-// `pixelsPerUnit` target pixels per drawing pixel (> 0). Throws InputError unless 0 <= glued < open.
+// thresholds narrows continuously to d (1 - c) / (1 + c), which still grows with d.
+// x (n x 2) is in drawing pixels, shown at `pixelsPerUnit` target pixels per drawing pixel (> 0).
+// Throws InputError unless 0 <= glued < open.
 SeamWeld weldSeams(const Eigen::MatrixX2d& x, const Seams& seams, double pixelsPerUnit,
                    const SeamWeldOptions& options = {});
 

@@ -62,8 +62,8 @@ TEST_CASE("render: every bundled key renders as its drawing at its weight e_i (2
     for (int k = 0; k < mesh.keyCount(); ++k) {
       const RgbaImage& drawing = bundled.drawings[k];
       const Eigen::MatrixX2d x = mesh.keyPositions(k);
-      const RgbaImage image =
-          OffscreenRenderer(context, renderMesh, bundled.target(k)).render(bundled.frame(k, x, Eigen::VectorXd::Unit(mesh.keyCount(), k)));
+      const Eigen::VectorXd w = Eigen::VectorXd::Unit(mesh.keyCount(), k);
+      const RgbaImage image = OffscreenRenderer(context, renderMesh, bundled.target(k)).render(bundled.frame(k, x, w));
       int inside = 0, outside = 0, wrongInside = 0, wrongOutside = 0;
       for (int py = 0; py < drawing.height; ++py)
         for (int px = 0; px < drawing.width; ++px) {
@@ -101,7 +101,9 @@ TEST_CASE("render: every bundled cut glued in an inbetween shows no seam (alpha 
     const int m = mesh.keyCount();
     std::vector<RgbaImage> blank;  // opaque white: what the mesh covers
     for (const RgbaImage& d : bundled.drawings)
-      blank.push_back(ib::test::paintedImage(d.width, d.height, [](int, int) { return std::array<uint8_t, 4>{255, 255, 255, 255}; }));
+      blank.push_back(ib::test::paintedImage(d.width, d.height, [](int, int) {
+        return std::array<uint8_t, 4>{255, 255, 255, 255};
+      }));
     const RenderMesh art = renderMeshOf(mesh, bundled.drawings), coverage = renderMeshOf(mesh, blank);
     Interpolator interpolator(mesh, interpolationParams(scene.solver), SolverOptions{});
     for (int k = 0; k < m; ++k) {
