@@ -290,12 +290,6 @@ Interpolator::Step Interpolator::step(const Frame& frame, const State& s, State&
     candidate.x = plain;
     if (tryCandidate()) return Step::kAccepted;
   }
-  if (s.active != global_->active()) {
-    // Cohesive pairs engaged or let go since H was built: H no longer models the energy.
-    refactorize(frame, s.active, result);
-    anderson_.reset();
-    return Step::kRefactorized;
-  }
   for (double beta = 0.5; beta > 1e-3; beta *= 0.5) {
     candidate.x = s.x + beta * (plain - s.x);
     if (tryCandidate()) return Step::kAccepted;
@@ -344,10 +338,16 @@ InterpolationResult Interpolator::solve(const Eigen::VectorXd& w, const Eigen::M
   State candidate;
   Eigen::MatrixX2d plain;
   while (norm > target && result.iterations < options_.maxIterations) {
-    const Step outcome = step(frame, s, candidate, plain, result);
-    if (outcome == Step::kRefactorized) continue;
-    if (outcome == Step::kStalled) break;  // no decrease along the step: reported as not converged
+    if (step(frame, s, candidate, plain, result) == Step::kStalled) break;  // reported as not converged
     std::swap(s, candidate);
+    if (s.active != global_->active()) {
+      // Cohesive pairs engaged or let go: H no longer models the energy. A pair that let go
+      // keeps its stiff spring in a stale H, so every step along it would be tiny (measured: the
+      // frame where a cut lets go took 46-500 iterations instead of 14), and a pair that engaged
+      // has none, so steps overshoot. Rebuild H at once, and with it the secant history.
+      refactorize(frame, s.active, result);
+      anderson_.reset();
+    }
     ++result.iterations;
     result.energyHistory.push_back(s.energy);
     norm = gradientNorm(s.gradient);

@@ -8,9 +8,9 @@
 // global step is x <- x - H^{-1} g with H = sum_t E^T M_t(w) E + cohesive springs + mu M, an n x n
 // matrix shared by x and y (global_matrix.h). With H the current frame's exact quadratic this is
 // the classic global solve. H is refactorized only when w has moved by more than
-// SolverOptions::refactorDistance (L1) since the last factorization, when the set of active
-// cohesive pairs at the start of a frame differs from H's, or when a step fails while it
-// differs (pairs engaged or let go mid-solve). Otherwise it serves as a fixed preconditioner:
+// SolverOptions::refactorDistance (L1) since the last factorization, and whenever the set of
+// active cohesive pairs differs from H's (at the start of a frame, or after an iteration in
+// which pairs engaged or let go). Otherwise it serves as a fixed preconditioner:
 // the fixed point is the same stationary point (g = 0), and the anisotropic, x-dependent
 // cohesive matrix P lives in the gradient (local step), not in H. Anderson acceleration on top,
 // minimizing the gradient, its history carried from frame to frame. An accelerated iterate that
@@ -135,10 +135,10 @@ class Interpolator {
   // Only what placement groups need: active cohesive pairs and non-overlap contacts.
   void evaluateLinks(const Frame& frame, State& state) const;
   void align(const Frame& frame, const State& reference, Eigen::MatrixX2d& x);
-  // One safeguarded iteration from s: the Anderson candidate, else the plain step, else (if the
-  // active cohesive set changed) a refactorization to retry with, else a backtracked plain
-  // step. On kAccepted the new iterate is in candidate; plain is scratch.
-  enum class Step { kAccepted, kRefactorized, kStalled };
+  // One safeguarded iteration from s: the Anderson candidate, else the plain step, else a
+  // backtracked plain step; kStalled if none decreases the energy. On kAccepted the new iterate
+  // is in candidate; plain is scratch. H must model s's active cohesive pairs.
+  enum class Step { kAccepted, kStalled };
   Step step(const Frame& frame, const State& s, State& candidate, Eigen::MatrixX2d& plain, InterpolationResult& result);
   // Factorizes H for the frame with these active cohesive pairs, unless the factor still models
   // it (ensureFactorization), or always (refactorize); counted and timed in result.
