@@ -37,6 +37,7 @@ const SolverOptions& validOptions(const InterpolationParams& p, const SolverOpti
   require(o.andersonDepth >= 0 && o.andersonDepth <= AndersonAcceleration::kMaxDepth, "andersonDepth",
           "must be in [0, " + std::to_string(AndersonAcceleration::kMaxDepth) + "]");
   require(o.refactorDistance >= 0 && std::isfinite(o.refactorDistance), "refactorDistance", "must be >= 0");
+  require(o.staleActiveIterations >= 1, "staleActiveIterations", "must be >= 1");
   require(o.placementStiffness > 0 && std::isfinite(o.placementStiffness), "placementStiffness", "must be > 0");
   require(o.nonOverlapStiffness > 0 && std::isfinite(o.nonOverlapStiffness), "nonOverlapStiffness", "must be > 0");
   require(o.threads >= 0, "threads", "must be >= 0 (0 = all cores)");
@@ -290,6 +291,12 @@ Interpolator::Step Interpolator::step(const Frame& frame, const State& s, State&
     candidate.x = plain;
     if (tryCandidate()) return Step::kAccepted;
   }
+  if (s.active != global_->active()) {
+    // Cohesive pairs engaged or let go since H was built: H no longer models the energy.
+    refactorize(frame, s.active, result);
+    anderson_.reset();
+    return Step::kRefactorized;
+  }
   for (double beta = 0.5; beta > 1e-3; beta *= 0.5) {
     candidate.x = s.x + beta * (plain - s.x);
     if (tryCandidate()) return Step::kAccepted;
@@ -337,16 +344,21 @@ InterpolationResult Interpolator::solve(const Eigen::VectorXd& w, const Eigen::M
 
   State candidate;
   Eigen::MatrixX2d plain;
+  int staleIterations = 0;  // accepted iterations in a row whose active cohesive set H does not model
   while (norm > target && result.iterations < options_.maxIterations) {
-    if (step(frame, s, candidate, plain, result) == Step::kStalled) break;  // reported as not converged
+    const Step outcome = step(frame, s, candidate, plain, result);
+    if (outcome == Step::kRefactorized) continue;
+    if (outcome == Step::kStalled) break;  // no decrease along the step: reported as not converged
     std::swap(s, candidate);
-    if (s.active != global_->active()) {
-      // Cohesive pairs engaged or let go: H no longer models the energy. A pair that let go
-      // keeps its stiff spring in a stale H, so every step along it would be tiny (measured: the
-      // frame where a cut lets go took 46-500 iterations instead of 14), and a pair that engaged
-      // has none, so steps overshoot. Rebuild H at once, and with it the secant history.
+    // A pair that let go keeps its stiff spring in a stale H, so steps along it stay tiny while
+    // still lowering the energy, and nothing fails (measured: the frame where a cut lets go took
+    // 46-500 iterations). So H is also rebuilt once it has been stale for a while; at once would
+    // cost a factorization per iteration while pairs let go one after another.
+    staleIterations = s.active == global_->active() ? 0 : staleIterations + 1;
+    if (staleIterations >= options_.staleActiveIterations) {
       refactorize(frame, s.active, result);
       anderson_.reset();
+      staleIterations = 0;
     }
     ++result.iterations;
     result.energyHistory.push_back(s.energy);

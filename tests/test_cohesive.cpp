@@ -118,8 +118,9 @@ TEST_CASE("cohesive: a clamped pair costs tau and exerts no force") {
 
 TEST_CASE("cohesive: the frame where a cut lets go converges in a few dozen iterations, also with stiff pairs") {
   // Stiffer pairs with tau lowered by the same factor let go at the same w (the breaking pull is
-  // sqrt(2 lambda tau l / 3)). With a stale H keeping the released pairs' springs, that frame took
-  // 46 (factor 1) and 375 (factor 16) iterations; with H rebuilt when pairs let go, 14-15.
+  // sqrt(2 lambda tau l / 3)). With a stale H keeping the released pairs' springs until a step
+  // failed, that frame took 46 (factor 1) and 375 (factor 16) iterations; with H rebuilt after
+  // staleActiveIterations (8), 25 and 30.
   const auto f = test::gluedSquares(kSide, 1.0, 0.3);
   for (double factor : {1.0, 16.0}) {
     InterpolationParams params;
@@ -134,7 +135,7 @@ TEST_CASE("cohesive: the frame where a cut lets go converges in a few dozen iter
       INFO("lambda x " << factor << ", s = " << s << ": " << r.iterations << " iterations, residual "
                        << r.relativeResidual);
       REQUIRE(r.converged);
-      REQUIRE(r.iterations <= 40);
+      REQUIRE(r.iterations <= 60);
       released += test::seamGap(r.x, kSide) / f.size > 0.05;
     }
     REQUIRE(released > 0);  // the sweep did pass the release

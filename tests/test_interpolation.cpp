@@ -196,6 +196,9 @@ TEST_CASE("interpolation: out-of-range parameters name the parameter") {
   o = {};
   o.maxIterations = 0;
   REQUIRE_THROWS_WITH(Interpolator(f.mesh, {}, o), Catch::Contains("maxIterations"));
+  o = {};
+  o.staleActiveIterations = 0;
+  REQUIRE_THROWS_WITH(Interpolator(f.mesh, {}, o), Catch::Contains("staleActiveIterations"));
   Multimesh empty(4, {{0, 1, 2}, {0, 2, 3}});
   REQUIRE_THROWS_WITH(Interpolator(empty, {}, SolverOptions{}), Catch::Contains("m = 0"));
 }
