@@ -59,9 +59,11 @@ struct SolverOptions {
   double refactorDistance = 1.0;    // refactorize H when |w - w_H|_1 exceeds this; 0 = exact H every frame
   // Refactorize H after this many iterations in a row in which the active cohesive pairs differ
   // from H's (pairs engaged or let go; a step that fails meanwhile refactorizes at once); >= 1.
-  // Default 8, from the frame where glued squares let go: at 9,800 vertices 6 factorizations and
-  // 52 iterations, 83-104 ms (1: 15 and 30, 176-206 ms; never: 225 iterations, 133-161 ms).
-  int staleActiveIterations = 8;
+  // Default 4. On the frame where 9,800-vertex glued squares let go: 9 factorizations and 45
+  // iterations, 93-113 ms (1: 15 and 30, 176-206 ms; 8: 6 and 52, 83-104 ms; never: 225
+  // iterations, 133-161 ms). With 8 and 16, two bundled scenes jumped in mid-animation (another
+  // minimum of the nonconvex energy); with 1, 2 and 4 they did not.
+  int staleActiveIterations = 4;
   double placementStiffness = 1e-5; // mu of the placement tie E_P (see placement.h), > 0
   double nonOverlapStiffness = 1;   // W_O penalty k, relative to the mean diagonal of the ARAP matrix
   int threads = 0;                  // threads for the local step and solves; 0 = all cores

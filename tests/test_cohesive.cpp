@@ -120,7 +120,7 @@ TEST_CASE("cohesive: the frame where a cut lets go converges in a few dozen iter
   // Stiffer pairs with tau lowered by the same factor let go at the same w (the breaking pull is
   // sqrt(2 lambda tau l / 3)). With a stale H keeping the released pairs' springs until a step
   // failed, that frame took 46 (factor 1) and 375 (factor 16) iterations; with H rebuilt after
-  // staleActiveIterations (8), 25 and 30.
+  // staleActiveIterations (4), 20 and 24.
   const auto f = test::gluedSquares(kSide, 1.0, 0.3);
   for (double factor : {1.0, 16.0}) {
     InterpolationParams params;
