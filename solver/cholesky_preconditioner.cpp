@@ -105,6 +105,15 @@ void CholeskyPreconditioner::adopt(const Eigen::SparseMatrix<double>& L, const i
     colValue_[k] = v;
     rowValue_[rowSlot_[k]] = v;
   }
+  if (dropTolerance_ > 0) {
+    lower_.clear();
+  } else {
+    lower_.assign(value, value + kept);
+  }
+  if (fresh) {
+    factorizationCost_ = 0;
+    for (int j = 0; j < n_; ++j) factorizationCost_ += static_cast<long>(start[j + 1] - start[j]) * (start[j + 1] - start[j]);
+  }
   // Multiplying by 1 / L_jj instead of dividing shortens the dependency chain from one
   // unknown to the next.
   inverseDiagonal_.resize(n_);

@@ -54,6 +54,19 @@ class CholeskyPreconditioner {
   // Entries of L stored (after dropping).
   long factorNonZeros() const { return static_cast<long>(colValue_.size()); }
 
+  // Modifies the factor to that of H + sigma v v^T (sigma = +1 an update, -1 a downdate) without
+  // refactorizing (Davis and Hager's sparse rank-one modification, cholesky_update.cpp). v: n x 1
+  // in H's numbering, given as rows and values (a repeated row sums). Its outer product must lie
+  // in H's pattern (every two of its rows coupled in H), so L keeps its pattern; std::logic_error
+  // otherwise, and on a factor with dropped entries. Throws std::runtime_error if a downdate
+  // leaves H not positive definite; the factor is then unusable until the next factorize().
+  void rankOneUpdate(const std::vector<int>& rows, const std::vector<double>& values, double sigma);
+  // Multiply-adds of a rank-one update whose first row (in H's numbering) is `row`: the entries
+  // of L on the path from that column to the root of the elimination tree. Comparable with
+  // factorizationCost(), the multiply-adds of a numeric factorization (sum of squared column counts).
+  long updateCost(int row) const;
+  long factorizationCost() const { return factorizationCost_; }
+
  private:
   // Takes the factor L of the permuted system (perm: row i of H is row perm[i] there; null for
   // none). fresh: L comes from a new analysis (else it has the pattern of the last call's).
@@ -87,6 +100,11 @@ class CholeskyPreconditioner {
   std::vector<int> rowSlot_;              // [entry kept, by columns]: its index in the row storage
   std::vector<int> source_;               // [entry kept, by columns]: its index in L's values
   std::vector<double> inverseDiagonal_;   // 1 / L_jj
+  std::vector<double> lower_;             // L's values in double, by columns (rank-one updates;
+                                          // empty when entries are dropped)
+  long factorizationCost_ = 0;            // sum over columns of (entries)^2
+  std::vector<double> updateWork_;        // n, zero between updates
+  std::vector<char> updateMark_;          // n, zero between updates: rows of v
   std::vector<std::vector<int>> part_;    // independent subtrees, one list per thread
   std::vector<int> top_;                  // separator columns above them, done serially
   mutable std::vector<double> work_;      // 2n interleaved

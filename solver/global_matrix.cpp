@@ -1,9 +1,12 @@
 #include "global_matrix.h"
 
+#include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <utility>
 
 namespace ib {
+
 
 GlobalMatrix::GlobalMatrix(GlobalMatrixSources sources, int vertices, std::vector<int> partStart, int threads)
     : sources_(sources), vertices_(vertices), assembly_(vertices), factor_(threads) {
@@ -42,6 +45,45 @@ const Eigen::SparseMatrix<double>& GlobalMatrix::assemble(const GlobalMatrixFram
   if (sources_.nonOverlap)
     for (int v : sources_.nonOverlap->allBoundaryVertices()) assembly_.add(v, v, sources_.nonOverlap->stiffness());
   return assembly_.matrix();
+}
+
+long GlobalMatrix::updateCost(const std::vector<char>& active) const {
+  if (!valid_ || active.size() != active_.size()) throw std::logic_error("global matrix: no factor to update");
+  const auto& terms = sources_.cohesive->terms();
+  long cost = 0;
+  for (size_t j = 0; j < active.size(); ++j)
+    if (active[j] != active_[j] && weights_(terms[j].key) != 0) {
+      const CohesivePair& p = terms[j].pair;
+      cost += 2 * factor_.updateCost(std::min(std::min(p.a, p.b), std::min(p.c, p.d)));
+    }
+  return cost;
+}
+
+bool GlobalMatrix::updateActive(const std::vector<char>& active) {
+  if (!valid_ || active.size() != active_.size()) throw std::logic_error("global matrix: no factor to update");
+  const CohesiveEnergy& cohesive = *sources_.cohesive;
+  const auto& terms = cohesive.terms();
+  // k S [[2,1],[1,2]] S^T = 3k/2 v1 v1^T + k/2 v2 v2^T with v1 = S (1, 1), v2 = S (1, -1). Springs
+  // that engage go first, so every intermediate H is positive definite.
+  for (int pass = 0; pass < 2; ++pass)
+    for (size_t j = 0; j < active.size(); ++j) {
+      const bool engages = active[j] && !active_[j];
+      if (active[j] == active_[j] || engages != (pass == 0) || weights_(terms[j].key) == 0) continue;
+      const CohesivePair& p = terms[j].pair;
+      const double k = weights_(terms[j].key) * cohesive.springConstant(static_cast<int>(j));
+      const double sigma = engages ? 1.0 : -1.0;
+      const double a1 = std::sqrt(1.5 * k), a2 = std::sqrt(0.5 * k);
+      try {
+        factor_.rankOneUpdate({p.a, p.c, p.b, p.d}, {a1, -a1, a1, -a1}, sigma);
+        factor_.rankOneUpdate({p.a, p.c, p.b, p.d}, {a2, -a2, -a2, a2}, sigma);
+      } catch (const std::runtime_error&) {
+        // A downdate lost definiteness to rounding; the factor is spoilt, so build it afresh.
+        factorize({weights_, springs_, active});
+        return false;
+      }
+    }
+  active_ = active;
+  return true;
 }
 
 void GlobalMatrix::factorize(const GlobalMatrixFrame& frame) {

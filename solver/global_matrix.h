@@ -49,6 +49,16 @@ class GlobalMatrix {
   // Assembles and factorizes H for the frame. Throws std::runtime_error if H is not positive
   // definite.
   void factorize(const GlobalMatrixFrame& frame);
+  // Brings the factor to the active cohesive pairs `active` (one entry per term) without
+  // refactorizing: two rank-one modifications per pair that engaged or let go, with its spring at
+  // the weights H was built for, so H stays what factorize() builds for those weights and pairs.
+  // Needs a factor (std::logic_error otherwise). Returns false if it had to factorize instead
+  // (a downdate that lost definiteness to rounding).
+  bool updateActive(const std::vector<char>& active);
+  // Multiply-adds updateActive(active) would take, comparable with factorizationCost().
+  long updateCost(const std::vector<char>& active) const;
+  // Multiply-adds of a factorization (CholeskyPreconditioner::factorizationCost).
+  long factorizationCost() const { return factor_.factorizationCost(); }
   // Forgets the factor: the next models() is false.
   void invalidate() { valid_ = false; }
 

@@ -8,10 +8,12 @@
 // global step is x <- x - H^{-1} g with H = sum_t E^T M_t(w) E + cohesive springs + mu M, an n x n
 // matrix shared by x and y (global_matrix.h). With H the current frame's exact quadratic this is
 // the classic global solve. H is refactorized only when w has moved by more than
-// SolverOptions::refactorDistance (L1) since the last factorization, when the set of active
-// cohesive pairs differs from H's at the start of a frame, and in mid-solve when it has differed
-// for SolverOptions::staleActiveIterations iterations or a step fails while it differs.
-// Otherwise it serves as a fixed preconditioner:
+// SolverOptions::refactorDistance (L1) since the last factorization. When the set of active
+// cohesive pairs changes (at the start of a frame or after an accepted iteration), the factor is
+// brought to it by rank-one updates, or, where a factorization costs less than those (meshes of
+// a few hundred vertices), refactorized at the start of a frame and in mid-solve once the set
+// has differed for SolverOptions::staleActiveIterations iterations or a step fails while it
+// differs. Otherwise H serves as a fixed preconditioner:
 // the fixed point is the same stationary point (g = 0), and the anisotropic, x-dependent
 // cohesive matrix P lives in the gradient (local step), not in H. Anderson acceleration on top,
 // minimizing the gradient, its history carried from frame to frame. An accelerated iterate that
@@ -57,12 +59,11 @@ struct SolverOptions {
   // more on the scenes; 32 was no better.
   int andersonDepth = 16;
   double refactorDistance = 1.0;    // refactorize H when |w - w_H|_1 exceeds this; 0 = exact H every frame
-  // Refactorize H after this many iterations in a row in which the active cohesive pairs differ
-  // from H's (pairs engaged or let go; a step that fails meanwhile refactorizes at once); >= 1.
-  // Default 4. On the frame where 9,800-vertex glued squares let go: 9 factorizations and 45
-  // iterations, 93-113 ms (1: 15 and 30, 176-206 ms; 8: 6 and 52, 83-104 ms; never: 225
-  // iterations, 133-161 ms). With 8 and 16, two bundled scenes jumped in mid-animation (another
-  // minimum of the nonconvex energy); with 1, 2 and 4 they did not.
+  // Where updating H's factor for changed active cohesive pairs would cost more than a
+  // factorization (small meshes, or many pairs changing at once): refactorize H after this many
+  // iterations in a row in which the active pairs differ from H's (a step that fails meanwhile
+  // refactorizes at once); >= 1. Default 4. With 8 and 16, two bundled scenes jumped in
+  // mid-animation (another minimum of the nonconvex energy); with 1, 2 and 4 they did not.
   int staleActiveIterations = 4;
   double placementStiffness = 1e-5; // mu of the placement tie E_P (see placement.h), > 0
   double nonOverlapStiffness = 1;   // W_O penalty k, relative to the mean diagonal of the ARAP matrix
@@ -80,7 +81,8 @@ struct InterpolationResult {
   double interpolationEnergy = 0;     // W_I alone at x (eq. 9), without the placement tie
   bool converged = false;             // residual below tolerance, or |g| at rounding level; never a small step
   int factorizations = 0;             // numeric factorizations of H during this solve
-  double factorMilliseconds = 0;      // their wall time, part of milliseconds
+  int factorUpdates = 0;              // rank-one updates of H's factor for changed active cohesive pairs
+  double factorMilliseconds = 0;      // wall time of both, part of milliseconds
   double milliseconds = 0;            // wall time of this solve, factorization included
   std::vector<double> energyHistory;    // energy after each iteration (start first)
   std::vector<double> residualHistory;  // relative residual after each iteration (start first: 1)
@@ -152,6 +154,10 @@ class Interpolator {
   // it (ensureFactorization), or always (refactorize); counted and timed in result.
   void ensureFactorization(const Frame& frame, const std::vector<char>& active, InterpolationResult& result);
   void refactorize(const Frame& frame, const std::vector<char>& active, InterpolationResult& result);
+  // Brings the factor to these active cohesive pairs by rank-one updates (GlobalMatrix::
+  // updateActive) unless they would cost more than a factorization (then false, nothing done).
+  // Counted and timed in result.
+  bool updateFactorization(const std::vector<char>& active, InterpolationResult& result);
 
   InterpolationParams params_;
   SolverOptions options_;

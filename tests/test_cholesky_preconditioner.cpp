@@ -34,6 +34,15 @@ Eigen::SparseMatrix<double> shiftedLaplacian() {
   return H;
 }
 
+// n x 2, entries uniform in [-1, 1].
+Eigen::MatrixX2d randomRhs(int n, unsigned seed) {
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> value(-1, 1);
+  Eigen::MatrixX2d b(n, 2);
+  for (int i = 0; i < n; ++i) b.row(i) << value(random), value(random);
+  return b;
+}
+
 // |H x - b| / |b| after solving H x = b with the factor.
 double relativeResidual(const CholeskyPreconditioner& factor, const Eigen::SparseMatrix<double>& H,
                         const Eigen::MatrixX2d& b) {
@@ -47,13 +56,10 @@ double relativeResidual(const CholeskyPreconditioner& factor, const Eigen::Spars
 TEST_CASE("cholesky preconditioner: solves to single precision with METIS's order and with any order given, on 1 and 2 threads") {
   const Eigen::SparseMatrix<double> H = shiftedLaplacian();
   const int n = static_cast<int>(H.rows());
-  std::mt19937 random(5);
-  std::uniform_real_distribution<double> value(-1, 1);
-  Eigen::MatrixX2d b(n, 2);
-  for (int i = 0; i < n; ++i) b.row(i) << value(random), value(random);
+  const Eigen::MatrixX2d b = randomRhs(n, 5);
   std::vector<int> shuffled(n), reversed(n);
   std::iota(shuffled.begin(), shuffled.end(), 0);
-  std::shuffle(shuffled.begin(), shuffled.end(), random);
+  std::shuffle(shuffled.begin(), shuffled.end(), std::mt19937(5));
   std::iota(reversed.rbegin(), reversed.rend(), 0);
   // The factor is single precision: about 1e-7 relative, times the condition number (below 30).
   const double tolerance = 1e-5;
@@ -81,10 +87,7 @@ TEST_CASE("cholesky preconditioner: a refactorization with new values in the sam
     for (Eigen::SparseMatrix<double>::InnerIterator it(other, j); it; ++it)
       if (it.row() != it.col()) it.valueRef() *= 1.0 + ((it.row() + it.col()) % 7) / 7.0;
   for (int j = 0; j < n; ++j) other.coeffRef(j, j) = 0.3 - (other.col(j).sum() - other.coeff(j, j));
-  std::mt19937 random(8);
-  std::uniform_real_distribution<double> value(-1, 1);
-  Eigen::MatrixX2d b(n, 2);
-  for (int i = 0; i < n; ++i) b.row(i) << value(random), value(random);
+  const Eigen::MatrixX2d b = randomRhs(n, 8);
   for (int threads : {1, 2}) {
     INFO(threads << " threads");
     CholeskyPreconditioner factor(threads);
@@ -101,10 +104,7 @@ TEST_CASE("cholesky preconditioner: dropping small factor entries keeps fewer of
   Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> amd;
   Eigen::AMDOrdering<int>()(H, amd);
   const std::vector<int> order(amd.indices().data(), amd.indices().data() + n);
-  std::mt19937 random(9);
-  std::uniform_real_distribution<double> value(-1, 1);
-  Eigen::MatrixX2d b(n, 2);
-  for (int i = 0; i < n; ++i) b.row(i) << value(random), value(random);
+  const Eigen::MatrixX2d b = randomRhs(n, 9);
   CholeskyPreconditioner exact(1);
   exact.factorizeInOrder(H, order);
   Eigen::MatrixX2d solved[2];
@@ -142,10 +142,7 @@ TEST_CASE("cholesky preconditioner: a given order that is not a permutation of t
 TEST_CASE("cholesky preconditioner: numbered by its elimination plan, a matrix factors with METIS's fill, each thread's part contiguous, and solves the same") {
   const Eigen::SparseMatrix<double> H = shiftedLaplacian();
   const int n = static_cast<int>(H.rows());
-  std::mt19937 random(11);
-  std::uniform_real_distribution<double> value(-1, 1);
-  Eigen::MatrixX2d b(n, 2);
-  for (int i = 0; i < n; ++i) b.row(i) << value(random), value(random);
+  const Eigen::MatrixX2d b = randomRhs(n, 11);
   for (int threads : {1, 2, 3}) {
     INFO(threads << " threads");
     const EliminationPlan plan = planElimination(H, threads);
@@ -194,4 +191,73 @@ TEST_CASE("cholesky preconditioner: a preordered matrix that couples two threads
   CholeskyPreconditioner factor(2);
   factor.setPreordered(plan.partStart);
   REQUIRE_THROWS_AS(factor.factorize(coupled), std::logic_error);
+}
+
+TEST_CASE("cholesky preconditioner: rank-one updates and downdates within H's pattern solve the modified matrix, and undo each other") {
+  const Eigen::SparseMatrix<double> H = shiftedLaplacian();
+  const int n = static_cast<int>(H.rows());
+  const GridMesh grid = rectangleGrid(40, 30, 4, 3);
+  const Eigen::MatrixX2d b = randomRhs(n, 13);
+  // Ten vectors, each on the three corners of a triangle (coupled in H): H + sum v v^T.
+  const Eigen::MatrixX2d entries = randomRhs(15, 14);
+  std::vector<std::vector<int>> rows;
+  std::vector<std::vector<double>> values;
+  Eigen::SparseMatrix<double> modified = H;
+  for (int k = 0; k < 10; ++k) {
+    const Triangle& t = grid.triangles[(k * 97) % grid.triangles.size()];
+    rows.push_back({t[0], t[1], t[2]});
+    values.push_back({entries(k, 0), entries(k, 1), entries(k + 5, 0)});
+    Eigen::SparseVector<double> v(n);
+    for (int c = 0; c < 3; ++c) v.coeffRef(t[c]) += values.back()[c];
+    modified += Eigen::SparseMatrix<double>(v * v.transpose());
+  }
+  const EliminationPlan plan = planElimination(H, 2);
+  Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> P(n);
+  for (int k = 0; k < n; ++k) P.indices()[plan.order[k]] = k;
+  for (bool preordered : {false, true}) {
+    INFO((preordered ? "preordered by an elimination plan" : "METIS's order"));
+    CholeskyPreconditioner factor(2);
+    // In the plan's numbering rows are renumbered as the matrix is.
+    const auto at = [&](int row) { return preordered ? P.indices()[row] : row; };
+    const auto system = [&](const Eigen::SparseMatrix<double>& A) {
+      return preordered ? Eigen::SparseMatrix<double>(P * A * P.transpose()) : A;
+    };
+    const Eigen::MatrixX2d rhs = preordered ? Eigen::MatrixX2d(P * b) : b;
+    if (preordered) factor.setPreordered(plan.partStart);
+    factor.factorize(system(H));
+    for (size_t k = 0; k < rows.size(); ++k) {
+      std::vector<int> r;
+      for (int row : rows[k]) r.push_back(at(row));
+      factor.rankOneUpdate(r, values[k], 1.0);
+    }
+    CHECK(relativeResidual(factor, system(modified), rhs) < 1e-5);
+    CHECK(relativeResidual(factor, system(H), rhs) > 1e-3);  // the factor did change
+    for (size_t k = rows.size(); k-- > 0;) {
+      std::vector<int> r;
+      for (int row : rows[k]) r.push_back(at(row));
+      factor.rankOneUpdate(r, values[k], -1.0);
+    }
+    CHECK(relativeResidual(factor, system(H), rhs) < 1e-5);
+  }
+}
+
+TEST_CASE("cholesky preconditioner: a rank-one update that would leave the pattern, a dropped factor or a downdate past definiteness is refused") {
+  const Eigen::SparseMatrix<double> H = shiftedLaplacian();
+  const int n = static_cast<int>(H.rows());
+  const Eigen::MatrixX2d b = randomRhs(n, 17);
+  CholeskyPreconditioner factor(1);
+  factor.factorize(H);
+  // Opposite corners of the grid are not coupled in H; the factor is left as it was.
+  CHECK_THROWS_AS(factor.rankOneUpdate({0, n - 1}, {1.0, 1.0}, 1.0), std::logic_error);
+  CHECK(relativeResidual(factor, H, b) < 1e-5);
+  CHECK_THROWS_AS(factor.rankOneUpdate({0, n}, {1.0, 1.0}, 1.0), std::invalid_argument);
+  CHECK(relativeResidual(factor, H, b) < 1e-5);
+  // H_00 is below 9, so taking 9 e_0 e_0^T away leaves it indefinite.
+  REQUIRE(H.coeff(0, 0) < 9);
+  CHECK_THROWS_AS(factor.rankOneUpdate({0}, {3.0}, -1.0), std::runtime_error);
+  // A factor with dropped entries has no exact pattern to update.
+  CholeskyPreconditioner dropped(1);
+  dropped.setDropTolerance(1e-3);
+  dropped.factorize(H);
+  CHECK_THROWS_AS(dropped.rankOneUpdate({0}, {1.0}, 1.0), std::logic_error);
 }

@@ -4,15 +4,17 @@
 #include <catch2/catch.hpp>
 #include <memory>
 #include <random>
+#include <stdexcept>
 
 using namespace ib;
 
 namespace {
 
-// The energies of the glued squares (8 x 8 vertices each, cohesive pairs along the seam in key 0)
-// and a GlobalMatrix over them on one thread, in the mesh's own vertex order.
+// The energies of the glued squares (side x side vertices each, cohesive pairs along the seam in
+// key 0) and a GlobalMatrix over them on one thread, in the mesh's own vertex order.
 struct GluedSquaresH {
-  test::Fixture f = test::gluedSquares(8, 0.5, 0.2);
+  explicit GluedSquaresH(int side = 8) : f(test::gluedSquares(side, 0.5, 0.2)) {}
+  test::Fixture f;
   std::vector<Eigen::MatrixX2d> keys{f.mesh.keyPositions(0), f.mesh.keyPositions(1)};
   DeformationEnergy deformation{f.mesh.triangles(), keys,
                                 Eigen::VectorXd::Ones(static_cast<int>(f.mesh.triangles().size()))};
@@ -85,4 +87,40 @@ TEST_CASE("global matrix: the factor models a frame only near the weights, sprin
   CHECK_FALSE(H->models({w0, none, active}, 1.0));
   H->invalidate();
   CHECK_FALSE(H->models({w0, springs, active}, 1.0));
+}
+
+TEST_CASE("global matrix: updating the factor for pairs that let go or engage solves as a factorization with those pairs does") {
+  // Large enough that a few rank-one updates cost less than a factorization.
+  GluedSquaresH g(30);
+  const std::vector<char> active(g.cohesive.terms().size(), 1);
+  REQUIRE(active.size() >= 20);
+  std::vector<char> released = active;  // every fifth pair lets go
+  for (size_t j = 0; j < released.size(); j += 5) released[j] = 0;
+  const Eigen::VectorXd none;
+  const Eigen::VectorXd w = Eigen::Vector2d(0.7, 0.3);
+  std::mt19937 random(19);
+  std::uniform_real_distribution<double> value(-1, 1);
+  Eigen::MatrixX2d b(g.n, 2);
+  for (int i = 0; i < g.n; ++i) b.row(i) << value(random), value(random);
+  const auto solved = [&](const GlobalMatrix& H) {
+    Eigen::MatrixX2d x = b;
+    H.factor().solve(x);
+    return x;
+  };
+  auto updated = g.make(1e-3, false);
+  auto fresh = g.make(1e-3, false);
+  CHECK_THROWS_AS(updated->updateActive(released), std::logic_error);  // nothing factorized yet
+  updated->factorize({w, none, active});
+  const Eigen::MatrixX2d before = solved(*updated);
+  REQUIRE(updated->updateActive(released));
+  CHECK(updated->active() == released);
+  CHECK(updated->models({w, none, released}, 0.0));
+  fresh->factorize({w, none, released});
+  // Both factors are single precision; the seam's springs (lambda l / 3) make H stiff along it.
+  const Eigen::MatrixX2d expected = solved(*fresh);
+  CHECK((solved(*updated) - expected).norm() < 1e-4 * expected.norm());
+  // Letting go changes the solution by 0.5% here: 50 times the tolerance above.
+  CHECK((before - expected).norm() > 2e-3 * expected.norm());
+  REQUIRE(updated->updateActive(active));
+  CHECK((solved(*updated) - before).norm() < 1e-4 * before.norm());
 }
