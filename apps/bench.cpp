@@ -79,24 +79,6 @@ Eigen::VectorXd sweepWeights(int keys, double s) {
   return w;
 }
 
-// CPU time of all CPUs since boot, in clock ticks, from Linux's /proc/stat; steal is time a
-// hypervisor gave to other guests while this one wanted to run. Empty where unavailable.
-struct CpuTicks {
-  long long steal = 0, total = 0;
-};
-std::optional<CpuTicks> cpuTicks() {
-  std::ifstream stat("/proc/stat");
-  std::string label;
-  long long fields[8] = {};  // user nice system idle iowait irq softirq steal
-  if (!(stat >> label) || label != "cpu") return std::nullopt;
-  for (long long& field : fields)
-    if (!(stat >> field)) return std::nullopt;
-  CpuTicks ticks;
-  for (long long field : fields) ticks.total += field;
-  ticks.steal = fields[7];
-  return ticks;
-}
-
 // First iteration whose energy is within `gap` (relative) of optimum, or -1.
 int iterationsToEnergy(const std::vector<double>& history, double optimum, double gap) {
   for (size_t k = 0; k < history.size(); ++k)
@@ -244,8 +226,7 @@ nlohmann::json benchCase(int vertices, int keys, int frames, int repeats, int th
     out["ms_per_iter"] = nullptr;
     out["iter_vs_reference"] = nullptr;
   }
-  if (ticksBefore && ticksAfter && ticksAfter->total > ticksBefore->total)
-    out["steal_percent"] = 100.0 * double(ticksAfter->steal - ticksBefore->steal) / double(ticksAfter->total - ticksBefore->total);
+  if (const auto steal = stealPercent(ticksBefore, ticksAfter)) out["steal_percent"] = *steal;
 
   if (baseline) {
     progress(label + ": optimum and plain local-global baseline");
@@ -273,6 +254,24 @@ nlohmann::json benchCase(int vertices, int keys, int frames, int repeats, int th
 
 }  // namespace
 
+std::optional<CpuTicks> cpuTicks() {
+  std::ifstream stat("/proc/stat");
+  std::string label;
+  long long fields[8] = {};  // user nice system idle iowait irq softirq steal
+  if (!(stat >> label) || label != "cpu") return std::nullopt;
+  for (long long& field : fields)
+    if (!(stat >> field)) return std::nullopt;
+  CpuTicks ticks;
+  for (long long field : fields) ticks.total += field;
+  ticks.steal = fields[7];
+  return ticks;
+}
+
+std::optional<double> stealPercent(const std::optional<CpuTicks>& before, const std::optional<CpuTicks>& after) {
+  if (!before || !after || after->total <= before->total) return std::nullopt;
+  return 100.0 * double(after->steal - before->steal) / double(after->total - before->total);
+}
+
 int runBench(const std::vector<std::string>& args) {
   if (args.empty() || args[0] == "--help" || args[0] == "-h") {
     std::fputs(kBenchUsage, args.empty() ? stderr : stdout);
@@ -281,7 +280,8 @@ int runBench(const std::vector<std::string>& args) {
   if (args[0] == "comesh") return runBenchComesh(std::vector<std::string>(args.begin() + 1, args.end()));
   if (args[0] == "anim") return runBenchAnim(std::vector<std::string>(args.begin() + 1, args.end()));
   if (args[0] == "render") return runBenchRender(std::vector<std::string>(args.begin() + 1, args.end()));
-  if (args[0] != "interp") throw InputError("bench: unknown case '" + args[0] + "' (available: interp, comesh, anim, render)");
+  if (args[0] == "cut") return runBenchCut(std::vector<std::string>(args.begin() + 1, args.end()));
+  if (args[0] != "interp") throw InputError("bench: unknown case '" + args[0] + "' (available: interp, comesh, anim, render, cut)");
   const cli::Arguments a("bench", std::vector<std::string>(args.begin() + 1, args.end()),
                          {"sizes", "keys", "frames", "repeats", "threads"}, {"no-baseline", "help"});
   if (a.flag("help")) {

@@ -24,6 +24,7 @@ constexpr const char* kUsage =
     "  bench comesh   benchmark Comesh Optimization; one JSON object per case\n"
     "  bench anim     benchmark playing every bundled scene's timeline; one JSON object per case\n"
     "  bench render   benchmark headless rendering (frames per second); one JSON object per case\n"
+    "  bench cut      benchmark the solver through a cut letting go; one JSON object per case\n"
     "\n"
     "options:\n"
     "  -h, --help     show this help (also: inbetween COMMAND --help)\n";

@@ -253,7 +253,7 @@ bool Interpolator::updateFactorization(const std::vector<char>& active, Interpol
   // A rank-one update's multiply-add takes 4-10 times as long as a factorization's (measured on
   // grids of 1k, 10k and 100k unknowns: 2.8, 2.8 and 6.3 ns against 0.79, 0.53 and 0.63), so the
   // updates are taken while their multiply-adds stay under a tenth of a factorization's.
-  if (global_->updateCost(active) > 0.1 * global_->factorizationCost()) return false;
+  if (!options_.updateFactor || global_->updateCost(active) > 0.1 * global_->factorizationCost()) return false;
   const auto started = std::chrono::steady_clock::now();
   if (global_->updateActive(active)) {
     ++result.factorUpdates;

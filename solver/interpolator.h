@@ -65,6 +65,10 @@ struct SolverOptions {
   // refactorizes at once); >= 1. Default 4. With 8 and 16, two bundled scenes jumped in
   // mid-animation (another minimum of the nonconvex energy); with 1, 2 and 4 they did not.
   int staleActiveIterations = 4;
+  // Follow changed active cohesive pairs by rank-one updates of H's factor where they cost less
+  // than a factorization (see above). false: refactorize by the rule above only (for comparison,
+  // `inbetween bench cut`). Default true.
+  bool updateFactor = true;
   double placementStiffness = 1e-5; // mu of the placement tie E_P (see placement.h), > 0
   double nonOverlapStiffness = 1;   // W_O penalty k, relative to the mean diagonal of the ARAP matrix
   int threads = 0;                  // threads for the local step and solves; 0 = all cores

@@ -78,4 +78,28 @@ Multimesh benchmarkStrip(int vertices, int keys) {
   return mesh;
 }
 
+Multimesh gluedSquares(int side, double gap, double bulge) {
+  const GridMesh square = rectangleGrid(side, side, 1.0, 1.0);
+  const int count = static_cast<int>(square.points.rows());
+  std::vector<Triangle> triangles = square.triangles;
+  for (const Triangle& t : square.triangles) triangles.push_back({t[0] + count, t[1] + count, t[2] + count});
+  Eigen::MatrixX2d glued(2 * count, 2), apart(2 * count, 2);
+  for (int v = 0; v < count; ++v) {
+    const double x = square.points(v, 0), y = square.points(v, 1);
+    glued.row(v) << x, y;
+    glued.row(v + count) << x + 1, y;
+    apart.row(v) << x + bulge * x * std::sin(M_PI * y), y;
+    apart.row(v + count) << x + 1 + gap - bulge * (1 - x) * std::sin(M_PI * y), y;
+  }
+  std::vector<int> boundary = square.boundary;
+  for (int v : square.boundary) boundary.push_back(v + count);
+  std::vector<CohesivePair> pairs;
+  for (int j = 0; j + 1 < side; ++j)
+    pairs.push_back({j * side + side - 1, (j + 1) * side + side - 1, count + j * side, count + (j + 1) * side});
+  Multimesh mesh(2 * count, triangles);
+  mesh.addKey(glued, pairs, boundary);
+  mesh.addKey(apart, {}, boundary);
+  return mesh;
+}
+
 }  // namespace ib

@@ -1,5 +1,6 @@
 // Meshes built in code: a triangulated rectangle and smooth, orientation-preserving
-// deformations of it (bend, stretch, wave). Used by the tests and by `inbetween bench`.
+// deformations of it (bend, stretch, wave), and two squares glued by a cut. Used by the tests and
+// by `inbetween bench`.
 #pragma once
 
 #include "multimesh.h"
@@ -31,5 +32,12 @@ Eigen::MatrixX2d waveStrip(const Eigen::MatrixX2d& X, double amplitude, double p
 // A strip of about `vertices` vertices (aspect 4:1) with `keys` keys (1..4): rest, 180-degree
 // bend, stretch, wave. Key 0 is the rest strip. No cohesive pairs.
 Multimesh benchmarkStrip(int vertices, int keys);
+
+// Two unit squares side by side (side x side vertices each, own vertices along the seam x = 1).
+// Key 0: glued, the seam sides collocated and paired as cohesive edges (side - 1 pairs). Key 1:
+// apart by `gap`, each seam side bulging towards the other by `bulge` so gluing them costs
+// deformation. Vertex j * side + side - 1 (left square) and side^2 + j * side (right) are the
+// seam's j-th pair from the bottom.
+Multimesh gluedSquares(int side, double gap, double bulge);
 
 }  // namespace ib

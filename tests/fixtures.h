@@ -20,9 +20,7 @@ struct Fixture {
 // Strip of ~vertices vertices: rest, 180-degree bend (2 keys) plus stretch and wave (4 keys).
 Fixture strip(int vertices, int keys);
 
-// Two unit squares side by side (n x n vertices each, own vertices along the seam x = 1).
-// Key 0: glued, the seam sides collocated and paired as cohesive edges. Key 1: apart by `gap`,
-// each seam side bulging towards the other by `bulge` so gluing them costs deformation.
+// ib::gluedSquares (shape_generators.h) with n x n vertices a square.
 Fixture gluedSquares(int n, double gap, double bulge);
 
 // Every fixture a property should hold on (strips, glued squares).
