@@ -267,11 +267,12 @@ bool Interpolator::updateFactorization(const std::vector<char>& active, Interpol
 
 void Interpolator::ensureFactorization(const Frame& frame, const std::vector<char>& active, InterpolationResult& result) {
   if (global_->models({frame.w, frame.springs, active}, options_.refactorDistance)) return;
-  // Only the active cohesive pairs differ: rank-one updates, when cheaper than a factorization.
-  if (global_->models({frame.w, frame.springs, global_->active()}, options_.refactorDistance) &&
-      updateFactorization(active, result))
-    return;
+  if (weightsNear(frame) && updateFactorization(active, result)) return;
   refactorize(frame, active, result);
+}
+
+bool Interpolator::weightsNear(const Frame& frame) const {
+  return global_->models({frame.w, frame.springs, global_->active()}, 0.5 * options_.refactorDistance);
 }
 
 void Interpolator::forgetHistory() {
@@ -373,10 +374,18 @@ InterpolationResult Interpolator::solve(const Eigen::VectorXd& w, const Eigen::M
     std::swap(s, candidate);
     // A pair that let go keeps its stiff spring in a stale H, so steps along it stay tiny while
     // still lowering the energy, and nothing fails (measured: the frame where a cut lets go took
-    // 46-500 iterations). So H's factor follows the pairs at once by rank-one updates. Where
-    // those cost more than a factorization, H is rebuilt once it has been stale for a while; at
-    // once would cost a factorization per iteration while pairs let go one after another.
-    if (s.active != global_->active() && updateFactorization(s.active, result)) anderson_.reset();
+    // 46-500 iterations). So H's factor follows the pairs at once: rebuilt at this frame's
+    // weights if H's are far from them, else by rank-one updates. Where those cost more than a
+    // factorization, H is rebuilt once it has been stale for a while; at once would cost a
+    // factorization per iteration while pairs let go one after another.
+    if (s.active != global_->active()) {
+      if (!weightsNear(frame)) {
+        refactorize(frame, s.active, result);
+        anderson_.reset();
+      } else if (updateFactorization(s.active, result)) {
+        anderson_.reset();
+      }
+    }
     staleIterations = s.active == global_->active() ? 0 : staleIterations + 1;
     if (staleIterations >= options_.staleActiveIterations) {
       refactorize(frame, s.active, result);

@@ -9,10 +9,11 @@
 // matrix shared by x and y (global_matrix.h). With H the current frame's exact quadratic this is
 // the classic global solve. H is refactorized only when w has moved by more than
 // SolverOptions::refactorDistance (L1) since the last factorization. When the set of active
-// cohesive pairs changes (at the start of a frame or after an accepted iteration), the factor is
-// brought to it by rank-one updates, or, where a factorization costs less than those (meshes of
-// a few hundred vertices), refactorized at the start of a frame and in mid-solve once the set
-// has differed for SolverOptions::staleActiveIterations iterations or a step fails while it
+// cohesive pairs changes (at the start of a frame or after an accepted iteration), H is
+// refactorized at the frame's weights if w has moved by more than half of refactorDistance;
+// otherwise its factor is brought to the new set by rank-one updates, or, where a factorization
+// costs less than those (meshes of about a hundred vertices), H is refactorized once the set has
+// differed for SolverOptions::staleActiveIterations iterations or a step fails while it
 // differs. Otherwise H serves as a fixed preconditioner:
 // the fixed point is the same stationary point (g = 0), and the anisotropic, x-dependent
 // cohesive matrix P lives in the gradient (local step), not in H. Anderson acceleration on top,
@@ -66,8 +67,8 @@ struct SolverOptions {
   // mid-animation (another minimum of the nonconvex energy); with 1, 2 and 4 they did not.
   int staleActiveIterations = 4;
   // Follow changed active cohesive pairs by rank-one updates of H's factor where they cost less
-  // than a factorization (see above). false: refactorize by the rule above only (for comparison,
-  // `inbetween bench cut`). Default true.
+  // than a factorization and w is near H's (see above). false: refactorize by the rules above
+  // only (for comparison, `inbetween bench cut`). Default true.
   bool updateFactor = true;
   double placementStiffness = 1e-5; // mu of the placement tie E_P (see placement.h), > 0
   double nonOverlapStiffness = 1;   // W_O penalty k, relative to the mean diagonal of the ARAP matrix
@@ -162,6 +163,10 @@ class Interpolator {
   // updateActive) unless they would cost more than a factorization (then false, nothing done).
   // Counted and timed in result.
   bool updateFactorization(const std::vector<char>& active, InterpolationResult& result);
+  // Whether H's factor models the frame but for its active cohesive pairs, with w within half of
+  // refactorDistance: then a change of the pairs is followed by updates, else by refactorizing at
+  // the frame's weights (which a factor change due anyway brings up to date).
+  bool weightsNear(const Frame& frame) const;
 
   InterpolationParams params_;
   SolverOptions options_;

@@ -120,10 +120,10 @@ TEST_CASE("cohesive: the frame where a cut lets go converges in a few dozen iter
   // Stiffer pairs with tau lowered by the same factor let go at the same w (the breaking pull is
   // sqrt(2 lambda tau l / 3)). With a stale H keeping the released pairs' springs until a step
   // failed, that frame took 46 (factor 1) and 375 (factor 16) iterations on the small squares.
-  // H now follows the pairs: on 800 vertices by rank-one updates of its factor, which replace
-  // factorizations (the sweep moves w by 2 in L1, so with refactorDistance 1 it needs one); on
-  // 98, where a factorization costs less than the updates, by refactorizing after
-  // staleActiveIterations.
+  // H now follows the pairs: on 800 vertices mostly by rank-one updates of its factor, with a
+  // factorization only when w has moved by half of refactorDistance (1) since the last, so at
+  // most 4 in a sweep that moves w by 2 in L1; on 98, where a factorization costs less than the
+  // updates, by refactorizing.
   for (int side : {kSide, 20}) {
     const auto f = test::gluedSquares(side, 1.0, 0.3);
     for (double factor : {1.0, 16.0}) {
@@ -150,7 +150,7 @@ TEST_CASE("cohesive: the frame where a cut lets go converges in a few dozen iter
         CHECK(updates == 0);
       } else {
         CHECK(updates > 0);
-        CHECK(factorizations <= 1);
+        CHECK(factorizations <= 4);
       }
     }
   }
