@@ -241,40 +241,6 @@ void Interpolator::align(const Frame& frame, const State& reference, Eigen::Matr
   alignGroups(x, frame.blend, groups_, vertexSplit_);
 }
 
-void Interpolator::refactorize(const Frame& frame, const std::vector<char>& active, InterpolationResult& result) {
-  const auto started = std::chrono::steady_clock::now();
-  global_->factorize({frame.w, frame.springs, active});
-  ++result.factorizations;
-  result.factorMilliseconds +=
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
-}
-
-bool Interpolator::updateFactorization(const std::vector<char>& active, InterpolationResult& result) {
-  // A rank-one update's multiply-add takes 4-10 times as long as a factorization's (measured on
-  // grids of 1k, 10k and 100k unknowns: 2.8, 2.8 and 6.3 ns against 0.79, 0.53 and 0.63), so the
-  // updates are taken while their multiply-adds stay under a tenth of a factorization's.
-  if (!options_.updateFactor || global_->updateCost(active) > 0.1 * global_->factorizationCost()) return false;
-  const auto started = std::chrono::steady_clock::now();
-  if (global_->updateActive(active)) {
-    ++result.factorUpdates;
-  } else {
-    ++result.factorizations;
-  }
-  result.factorMilliseconds +=
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
-  return true;
-}
-
-void Interpolator::ensureFactorization(const Frame& frame, const std::vector<char>& active, InterpolationResult& result) {
-  if (global_->models({frame.w, frame.springs, active}, options_.refactorDistance)) return;
-  if (weightsNear(frame) && updateFactorization(active, result)) return;
-  refactorize(frame, active, result);
-}
-
-bool Interpolator::weightsNear(const Frame& frame) const {
-  return global_->models({frame.w, frame.springs, global_->active()}, 0.5 * options_.refactorDistance);
-}
-
 void Interpolator::forgetHistory() {
   anderson_.reset();
   global_->invalidate();
@@ -315,7 +281,7 @@ Interpolator::Step Interpolator::step(const Frame& frame, const State& s, State&
   }
   if (s.active != global_->active()) {
     // Cohesive pairs engaged or let go since H was built: H no longer models the energy.
-    refactorize(frame, s.active, result);
+    refactorize(frame.w, frame.springs, s.active, result);
     anderson_.reset();
     return Step::kRefactorized;
   }
@@ -348,7 +314,7 @@ InterpolationResult Interpolator::solve(const Eigen::VectorXd& w, const Eigen::M
 
   InterpolationResult result;
   result.evaluations = 1;
-  ensureFactorization(frame, s.active, result);
+  ensureFactorization(frame.w, frame.springs, s.active, result);
   result.startEnergy = s.energy;
   result.energyHistory.push_back(s.energy);
   const double startNorm = gradientNorm(s.gradient);
@@ -374,21 +340,13 @@ InterpolationResult Interpolator::solve(const Eigen::VectorXd& w, const Eigen::M
     std::swap(s, candidate);
     // A pair that let go keeps its stiff spring in a stale H, so steps along it stay tiny while
     // still lowering the energy, and nothing fails (measured: the frame where a cut lets go took
-    // 46-500 iterations). So H's factor follows the pairs at once: rebuilt at this frame's
-    // weights if H's are far from them, else by rank-one updates. Where those cost more than a
-    // factorization, H is rebuilt once it has been stale for a while; at once would cost a
-    // factorization per iteration while pairs let go one after another.
-    if (s.active != global_->active()) {
-      if (!weightsNear(frame)) {
-        refactorize(frame, s.active, result);
-        anderson_.reset();
-      } else if (updateFactorization(s.active, result)) {
-        anderson_.reset();
-      }
-    }
+    // 46-500 iterations). So H's factor follows the pairs at once where it can (followActive);
+    // where that costs more than a factorization, H is rebuilt once it has been stale for a
+    // while; at once would cost a factorization per iteration while pairs let go one after another.
+    if (s.active != global_->active() && followActive(frame.w, frame.springs, s.active, result)) anderson_.reset();
     staleIterations = s.active == global_->active() ? 0 : staleIterations + 1;
     if (staleIterations >= options_.staleActiveIterations) {
-      refactorize(frame, s.active, result);
+      refactorize(frame.w, frame.springs, s.active, result);
       anderson_.reset();
       staleIterations = 0;
     }

@@ -155,18 +155,22 @@ class Interpolator {
   // step. On kAccepted the new iterate is in candidate; plain is scratch.
   enum class Step { kAccepted, kRefactorized, kStalled };
   Step step(const Frame& frame, const State& s, State& candidate, Eigen::MatrixX2d& plain, InterpolationResult& result);
-  // Factorizes H for the frame with these active cohesive pairs, unless the factor still models
-  // it (ensureFactorization), or always (refactorize); counted and timed in result.
-  void ensureFactorization(const Frame& frame, const std::vector<char>& active, InterpolationResult& result);
-  void refactorize(const Frame& frame, const std::vector<char>& active, InterpolationResult& result);
-  // Brings the factor to these active cohesive pairs by rank-one updates (GlobalMatrix::
-  // updateActive) unless they would cost more than a factorization (then false, nothing done).
-  // Counted and timed in result.
+  // H's factor for a frame's weights w (m x 1), vertex springs (n x 1 or empty) and active
+  // cohesive pairs (interpolator_factor.cpp); all counted and timed in result.
+  // Factorizes H, unless the factor still models the frame (ensureFactorization: only the pairs
+  // differing is followed as in followActive), or always (refactorize).
+  void ensureFactorization(const Eigen::VectorXd& w, const Eigen::VectorXd& springs, const std::vector<char>& active,
+                           InterpolationResult& result);
+  void refactorize(const Eigen::VectorXd& w, const Eigen::VectorXd& springs, const std::vector<char>& active,
+                   InterpolationResult& result);
+  // Brings the factor to changed active pairs: refactorized at w when w has moved by more than
+  // half of refactorDistance since H was built (a factor change due anyway catches up with the
+  // weights), else by rank-one updates (GlobalMatrix::updateActive) unless they would cost more
+  // than a factorization. Returns whether the factor changed.
+  bool followActive(const Eigen::VectorXd& w, const Eigen::VectorXd& springs, const std::vector<char>& active,
+                    InterpolationResult& result);
+  // The rank-one branch of followActive: false, nothing done, when too costly or turned off.
   bool updateFactorization(const std::vector<char>& active, InterpolationResult& result);
-  // Whether H's factor models the frame but for its active cohesive pairs, with w within half of
-  // refactorDistance: then a change of the pairs is followed by updates, else by refactorizing at
-  // the frame's weights (which a factor change due anyway brings up to date).
-  bool weightsNear(const Frame& frame) const;
 
   InterpolationParams params_;
   SolverOptions options_;
