@@ -33,6 +33,7 @@ void CholeskyPreconditioner::setPreordered(std::vector<int> partStart) {
 }
 
 void CholeskyPreconditioner::factorize(const Eigen::SparseMatrix<double>& H) {
+  exactValues_ = nullptr;  // overwritten below; set again once the factorization succeeds
   if (!partStart_.empty()) {
     auto& llt = analysis_->ordered;
     const bool first = !analysis_->preorderedAnalyzed;
@@ -72,6 +73,7 @@ void CholeskyPreconditioner::factorizeInOrder(const Eigen::SparseMatrix<double>&
   Eigen::SparseMatrix<double> permuted(n, n);
   permuted.selfadjointView<Eigen::Lower>() = H.selfadjointView<Eigen::Lower>().twistedBy(P);  // P H P^T
   auto& ordered = analysis_->ordered;
+  exactValues_ = nullptr;
   ordered.analyzePattern(permuted);
   ordered.factorize(permuted);
   if (ordered.info() != Eigen::Success) throw std::runtime_error("global matrix is not positive definite");
@@ -105,11 +107,9 @@ void CholeskyPreconditioner::adopt(const Eigen::SparseMatrix<double>& L, const i
     colValue_[k] = v;
     rowValue_[rowSlot_[k]] = v;
   }
-  if (dropTolerance_ > 0) {
-    lower_.clear();
-  } else {
-    lower_.assign(value, value + kept);
-  }
+  // Rank-one updates copy L's values on first use, from the factorization that owns them.
+  exactValues_ = dropTolerance_ > 0 ? nullptr : value;
+  lower_.clear();
   if (fresh) {
     factorizationCost_ = 0;
     for (int j = 0; j < n_; ++j) factorizationCost_ += static_cast<long>(start[j + 1] - start[j]) * (start[j + 1] - start[j]);

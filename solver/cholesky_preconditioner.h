@@ -100,8 +100,10 @@ class CholeskyPreconditioner {
   std::vector<int> rowSlot_;              // [entry kept, by columns]: its index in the row storage
   std::vector<int> source_;               // [entry kept, by columns]: its index in L's values
   std::vector<double> inverseDiagonal_;   // 1 / L_jj
-  std::vector<double> lower_;             // L's values in double, by columns (rank-one updates;
-                                          // empty when entries are dropped)
+  const double* exactValues_ = nullptr;   // L's values in double, owned by the last factorization
+                                          // (null when entries are dropped)
+  std::vector<double> lower_;             // their copy that rank-one updates modify (empty until
+                                          // the first update after a factorization)
   long factorizationCost_ = 0;            // sum over columns of (entries)^2
   std::vector<double> updateWork_;        // n, zero between updates
   std::vector<char> updateMark_;          // n, zero between updates: rows of v

@@ -29,8 +29,8 @@ long CholeskyPreconditioner::updateCost(int row) const {
 
 void CholeskyPreconditioner::rankOneUpdate(const std::vector<int>& rows, const std::vector<double>& values,
                                            double sigma) {
-  if (lower_.empty() || static_cast<int>(lower_.size()) != colStart_.back())
-    throw std::logic_error("rank-one update: needs an exact factor (no dropped entries)");
+  if (!exactValues_) throw std::logic_error("rank-one update: needs an exact factor (no dropped entries)");
+  if (lower_.empty()) lower_.assign(exactValues_, exactValues_ + colStart_.back());
   if (rows.size() != values.size()) throw std::invalid_argument("rank-one update: rows and values differ in length");
   if (rows.empty()) return;
   std::vector<double>& x = updateWork_;  // v, then what is left of it below the current column

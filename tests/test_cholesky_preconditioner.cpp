@@ -241,7 +241,7 @@ TEST_CASE("cholesky preconditioner: rank-one updates and downdates within H's pa
   }
 }
 
-TEST_CASE("cholesky preconditioner: a rank-one update that would leave the pattern, a dropped factor or a downdate past definiteness is refused") {
+TEST_CASE("cholesky preconditioner: a rank-one update that would leave the pattern, a downdate past definiteness, a failed or a dropped factor is refused") {
   const Eigen::SparseMatrix<double> H = shiftedLaplacian();
   const int n = static_cast<int>(H.rows());
   const Eigen::MatrixX2d b = randomRhs(n, 17);
@@ -255,6 +255,13 @@ TEST_CASE("cholesky preconditioner: a rank-one update that would leave the patte
   // H_00 is below 9, so taking 9 e_0 e_0^T away leaves it indefinite.
   REQUIRE(H.coeff(0, 0) < 9);
   CHECK_THROWS_AS(factor.rankOneUpdate({0}, {3.0}, -1.0), std::runtime_error);
+  // Nor is a factor whose last factorization failed updated.
+  CholeskyPreconditioner failed(1);
+  failed.factorize(H);
+  Eigen::SparseMatrix<double> indefinite = H;
+  indefinite.coeffRef(0, 0) = -1;
+  CHECK_THROWS_AS(failed.factorize(indefinite), std::runtime_error);
+  CHECK_THROWS_AS(failed.rankOneUpdate({0}, {1.0}, 1.0), std::logic_error);
   // A factor with dropped entries has no exact pattern to update.
   CholeskyPreconditioner dropped(1);
   dropped.setDropTolerance(1e-3);
