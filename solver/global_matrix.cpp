@@ -7,7 +7,6 @@
 
 namespace ib {
 
-
 GlobalMatrix::GlobalMatrix(GlobalMatrixSources sources, int vertices, std::vector<int> partStart, int threads)
     : sources_(sources), vertices_(vertices), assembly_(vertices), factor_(threads) {
   factor_.setPreordered(std::move(partStart));
