@@ -361,6 +361,7 @@ InterpolationResult Interpolator::solve(const Eigen::VectorXd& w, const Eigen::M
   result.converged = norm <= target;
   result.relativeResidual = relative(norm);
   result.energy = s.energy;
+  result.activePairs = s.active;
   result.interpolationEnergy = s.energy - s.placement;
   result.x = fromLayout(s.x, originalOf_) * scale_;
   result.milliseconds =

@@ -91,6 +91,10 @@ struct InterpolationResult {
   double milliseconds = 0;            // wall time of this solve, factorization included
   std::vector<double> energyHistory;    // energy after each iteration (start first)
   std::vector<double> residualHistory;  // relative residual after each iteration (start first: 1)
+  // Per cohesive pair, in the multimesh's order (key 0's pairs C_0, then C_1, ...), at the last
+  // iterate: 1 while the pair holds (l/3 d < tau, eq. 11), 0 once it is clamped (let go) or its
+  // key has zero weight.
+  std::vector<char> activePairs;
 };
 
 // Extra per-vertex springs E_S = 1/2 sum_v c_v |x_v - y_v|^2 added to the energy of one solve:

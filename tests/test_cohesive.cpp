@@ -3,6 +3,7 @@
 #include "interpolator.h"
 
 #include <catch2/catch.hpp>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -59,6 +60,31 @@ TEST_CASE("cohesive: glued squares stay glued near the glued key and separate pa
   REQUIRE(gaps[0] < 1e-3);
   REQUIRE(gaps[1] < 1e-3);
   REQUIRE(gaps[2] > 0.1);
+}
+
+TEST_CASE("cohesive: a solve reports as holding exactly the pairs that are still glued") {
+  // Along the sweep a pair either holds with a gap under 0.3% of the size or has let go and
+  // opened by more than 8% (measured), so 1% tells the two apart.
+  const auto f = test::gluedSquares(kSide, 1.0, 0.3);
+  Interpolator solver(f.mesh, {}, SolverOptions{});
+  const std::vector<CohesivePair>& seam = f.mesh.cohesivePairs(0);
+  REQUIRE(f.mesh.cohesivePairs(1).empty());
+  InterpolationResult r = solver.solve(Eigen::Vector2d(1, 0));
+  long lastHolding = 0;
+  for (int k = 1; k <= 45; ++k) {
+    const double s = k / 50.0;
+    r = solver.solve(Eigen::Vector2d(1 - s, s), &r.x);
+    REQUIRE(r.activePairs.size() == seam.size());
+    for (size_t j = 0; j < seam.size(); ++j) {
+      const CohesivePair& p = seam[j];
+      const double gap = std::max((r.x.row(p.a) - r.x.row(p.c)).norm(), (r.x.row(p.b) - r.x.row(p.d)).norm()) / f.size;
+      INFO("s = " << s << ", pair " << j << ": gap " << gap);
+      REQUIRE(bool(r.activePairs[j]) == (gap < 1e-2));
+    }
+    lastHolding = std::count(r.activePairs.begin(), r.activePairs.end(), 1);
+    if (s <= 0.3) REQUIRE(lastHolding == static_cast<long>(seam.size()));
+  }
+  REQUIRE(lastHolding < static_cast<long>(seam.size()));
 }
 
 TEST_CASE("cohesive: without a threshold (tau = infinity) the squares never separate") {
