@@ -5,6 +5,7 @@
 #include "frame_stream.h"
 #include "render_options.h"
 
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -146,12 +147,16 @@ int runRender(const std::vector<std::string>& rawArgs) {
     render::FrameDraw request;
     request.positions = &frame.x;
     request.weights = frame.weights;
+    request.holding = &frame.activePairs;
     request.view = view;
     request.overlays = options.overlays;
     for (int d = 1; d <= options.onion; ++d) {
       const float opacity = 0.35f / d;
-      if (at >= static_cast<size_t>(d)) request.onion.push_back({&window[at - d].x, window[at - d].weights, {1.0f, 0.45f, 0.45f}, opacity});
-      if (at + d < window.size()) request.onion.push_back({&window[at + d].x, window[at + d].weights, {0.45f, 1.0f, 0.45f}, opacity});
+      const auto skin = [&](const AnimationFrame& f, std::array<float, 3> tint) {
+        return render::OnionSkin{&f.x, f.weights, tint, opacity, &f.activePairs};
+      };
+      if (at >= static_cast<size_t>(d)) request.onion.push_back(skin(window[at - d], {1.0f, 0.45f, 0.45f}));
+      if (at + d < window.size()) request.onion.push_back(skin(window[at + d], {0.45f, 1.0f, 0.45f}));
     }
     renderer.submit(request);
     inFlight.push_back(frame.index);

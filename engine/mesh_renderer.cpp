@@ -130,13 +130,14 @@ MeshRenderer::Active MeshRenderer::activeKeys(const Eigen::VectorXd& weights) co
 }
 
 void MeshRenderer::drawArtwork(VkCommandBuffer cmd, const float view[4], double pixelsPerUnit, const Eigen::MatrixX2d& x,
-                               const Eigen::VectorXd& weights, const float tint[4], int slot, VkDeviceSize& offset) {
+                               const Eigen::VectorXd& weights, const std::vector<char>* holding, const float tint[4],
+                               int slot, VkDeviceSize& offset) {
   if (x.rows() != vertexCount_)
     throw InputError("render: " + std::to_string(x.rows()) + " positions for " + std::to_string(vertexCount_) + " vertices");
   if (!x.allFinite()) throw InputError("render: positions are not finite");
   const Active active = activeKeys(weights);
   if (active.count == 0) return;  // nothing has weight: nothing to draw
-  const SeamWeld weld = weldSeams(x, seams_, pixelsPerUnit);
+  const SeamWeld weld = weldSeams(x, seams_, pixelsPerUnit, {}, holding);
   auto* out = reinterpret_cast<float*>(static_cast<char*>(streams_[slot].mapped) + offset);
   for (int v = 0; v < vertexCount_; ++v) {
     out[kArtworkFloats * v] = static_cast<float>(weld.positions(v, 0));
@@ -218,10 +219,10 @@ void MeshRenderer::record(VkCommandBuffer cmd, int slot, VkExtent2D extent, cons
     if (!skin.positions) throw InputError("render: an onion skin has no positions");
     const float o = std::clamp(skin.opacity, 0.0f, 1.0f);
     const float tint[4] = {skin.tint[0] * o, skin.tint[1] * o, skin.tint[2] * o, o};
-    drawArtwork(cmd, view, pixelsPerUnit, *skin.positions, skin.weights, tint, slot, offset);
+    drawArtwork(cmd, view, pixelsPerUnit, *skin.positions, skin.weights, skin.holding, tint, slot, offset);
   }
   const float plain[4] = {1, 1, 1, 1};
-  drawArtwork(cmd, view, pixelsPerUnit, *frame.positions, frame.weights, plain, slot, offset);
+  drawArtwork(cmd, view, pixelsPerUnit, *frame.positions, frame.weights, frame.holding, plain, slot, offset);
   offset = (1 + kMaxOnionSkins) * static_cast<VkDeviceSize>(vertexCount_) * sizeof(vk::ArtworkVertex);
   drawOverlays(cmd, view, extent, frame, slot, offset);
 }

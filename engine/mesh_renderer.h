@@ -38,7 +38,8 @@ class MeshRenderer {
   Active activeKeys(const Eigen::VectorXd& weights) const;
   // pixelsPerUnit: target pixels per drawing pixel, for weldSeams.
   void drawArtwork(VkCommandBuffer cmd, const float view[4], double pixelsPerUnit, const Eigen::MatrixX2d& x,
-                   const Eigen::VectorXd& weights, const float tint[4], int slot, VkDeviceSize& offset);
+                   const Eigen::VectorXd& weights, const std::vector<char>* holding, const float tint[4], int slot,
+                   VkDeviceSize& offset);
   void drawOverlays(VkCommandBuffer cmd, const float view[4], VkExtent2D extent, const FrameDraw& frame, int slot,
                     VkDeviceSize offset);
 

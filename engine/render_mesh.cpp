@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <set>
 #include <string>
 
@@ -12,21 +13,31 @@ namespace ib::render {
 namespace {
 
 Seams seamsOf(const Multimesh& mesh) {
-  std::set<std::array<int, 4>> pairs;
+  std::map<std::array<int, 4>, int> pairs;  // pair -> its index in Seams::pairs
+  std::vector<std::array<int, 4>> terms;
   std::set<Edge> partners;
   for (int k = 0; k < mesh.keyCount(); ++k)
     for (const CohesivePair& p : mesh.cohesivePairs(k)) {
-      pairs.insert({p.a, p.b, p.c, p.d});
+      terms.push_back({p.a, p.b, p.c, p.d});
+      pairs.insert({terms.back(), 0});
       for (const Edge& e : {Edge{p.a, p.c}, Edge{p.b, p.d}})
         if (e[0] != e[1]) partners.insert({std::min(e[0], e[1]), std::max(e[0], e[1])});
     }
   Seams out;
   std::vector<char> onCut(mesh.vertexCount(), 0);
-  for (const std::array<int, 4>& p : pairs) {
+  for (auto& [p, index] : pairs) {
+    index = static_cast<int>(out.pairs.size());
     out.pairs.push_back({p[0], p[1], p[2], p[3]});
     for (int v : p) onCut[v] = 1;
   }
+  for (const std::array<int, 4>& t : terms) out.pairOfTerm.push_back(pairs.at(t));
   out.partners.assign(partners.begin(), partners.end());
+  const auto partnerIndex = [&](int u, int v) {
+    if (u == v) return -1;
+    const Edge e{std::min(u, v), std::max(u, v)};
+    return static_cast<int>(std::lower_bound(out.partners.begin(), out.partners.end(), e) - out.partners.begin());
+  };
+  for (const CohesivePair& p : out.pairs) out.pairPartners.push_back({partnerIndex(p.a, p.c), partnerIndex(p.b, p.d)});
   std::set<Edge> ring;
   for (const Triangle& t : mesh.triangles())
     for (int e = 0; e < 3; ++e)
@@ -76,24 +87,38 @@ RenderMesh renderMeshOf(const Multimesh& mesh, std::vector<RgbaImage> artwork, s
   return out;
 }
 
-SeamWeld weldSeams(const Eigen::MatrixX2d& x, const Seams& seams, double pixelsPerUnit, const SeamWeldOptions& options) {
+SeamWeld weldSeams(const Eigen::MatrixX2d& x, const Seams& seams, double pixelsPerUnit, const SeamWeldOptions& options,
+                   const std::vector<char>* holding) {
   if (!(options.glued >= 0 && options.open > options.glued))
     throw InputError("render: seam welding needs 0 <= glued < open pixels");
   if (!(pixelsPerUnit > 0 && std::isfinite(pixelsPerUnit))) throw InputError("render: seam welding needs a positive scale");
+  if (holding && holding->size() != seams.pairOfTerm.size())
+    throw InputError("render: " + std::to_string(holding->size()) + " holding flags for " +
+                     std::to_string(seams.pairOfTerm.size()) + " cohesive pairs");
+  if (holding && seams.pairPartners.size() != seams.pairs.size())
+    throw InputError("render: holding flags need seams with pairPartners (renderMeshOf's)");
   const Eigen::Index n = x.rows();
   SeamWeld out{x, std::vector<float>(n, 0.0f)};
   if (seams.pairs.empty()) return out;
-  for (const CohesivePair& p : seams.pairs) {
+  std::vector<char> held(seams.pairs.size(), 0), heldPartner(seams.partners.size(), 0);
+  for (size_t t = 0; holding && t < holding->size(); ++t)
+    if ((*holding)[t]) held[seams.pairOfTerm[t]] = 1;
+  for (size_t j = 0; j < seams.pairs.size(); ++j) {
+    const CohesivePair& p = seams.pairs[j];
     const double gap = pixelsPerUnit * std::max((x.row(p.a) - x.row(p.c)).norm(), (x.row(p.b) - x.row(p.d)).norm());
-    const float c = static_cast<float>(closureAt(gap, options));
+    const float c = held[j] ? 1.0f : static_cast<float>(closureAt(gap, options));
     for (int v : {p.a, p.b, p.c, p.d}) out.closure[v] = std::max(out.closure[v], c);
+    if (held[j])
+      for (int e : seams.pairPartners[j])
+        if (e >= 0) heldPartner[e] = 1;
   }
   for (const Edge& e : seams.ring) out.closure[e[0]] = std::max(out.closure[e[0]], out.closure[e[1]]);
   Eigen::MatrixX2d pull = Eigen::MatrixX2d::Zero(n, 2);  // sum_v c_uv (v - u) per vertex u
   Eigen::VectorXd pulls = Eigen::VectorXd::Zero(n);       // sum_v c_uv
-  for (const Edge& e : seams.partners) {
+  for (size_t k = 0; k < seams.partners.size(); ++k) {
+    const Edge& e = seams.partners[k];
     const Eigen::RowVector2d d = x.row(e[1]) - x.row(e[0]);
-    const double c = closureAt(pixelsPerUnit * d.norm(), options);
+    const double c = heldPartner[k] ? 1.0 : closureAt(pixelsPerUnit * d.norm(), options);
     pull.row(e[0]) += c * d;
     pull.row(e[1]) -= c * d;
     pulls[e[0]] += c;

@@ -17,7 +17,11 @@ using Edge = std::array<int, 2>;
 // The cuts of a multimesh: the cohesive pairs of all keys, and the vertex pairs they collocate.
 struct Seams {
   std::vector<CohesivePair> pairs;  // every key's C_i, each pair once
+  std::vector<int> pairOfTerm;      // [term]: index into pairs of each key's pair, in the solver's
+                                    // order (key 0's pairs C_0, then C_1, ...: activePairs)
   std::vector<Edge> partners;       // {a, c} and {b, d} of every pair where the two differ, each once
+  std::vector<std::array<int, 2>> pairPartners;  // [pair]: indices into partners of its {a, c} and
+                                                 // {b, d}, -1 where the two are one vertex
   std::vector<Edge> ring;           // {v, u}: v off the cuts shares a triangle with u on one
 };
 
@@ -55,18 +59,22 @@ struct SeamWeld {
 };
 
 // A pair's closure is c = clamp((open - d) / (open - glued), 0, 1), where d is the larger of its
-// two end gaps |x_a - x_c| and |x_b - x_d|; a vertex's closure is the largest of its pairs' (so the
+// two end gaps |x_a - x_c| and |x_b - x_d|, or 1 where the solver says the pair holds (`holding`,
+// optional: InterpolationResult::activePairs of x, one flag per term of Seams::pairOfTerm; a
+// pair of several keys holds if any of its terms does): a held pair is glued by definition, even
+// where it has stretched to a pixel or more just before it lets go. A vertex's closure is the largest of its pairs' (so the
 // tip of a cut, where a == c, gets its pair's), and a vertex next to a cut takes the largest of its
 // neighbours' on it: the triangles along a glued cut have closure 1 throughout (an open key's
 // partly transparent texels can reach a few pixels into them where its map stretches), and it
 // falls to 0 across the next ring of triangles. Welding: each partner pair {u, v} has c_uv from its
-// own gap, and u moves to u + sum_v c_uv (v - u) / (1 + sum_v c_uv): a glued pair meets at its
+// own gap (1 where a held pair collocates them), and u moves to u + sum_v c_uv (v - u) / (1 + sum_v c_uv): a glued pair meets at its
 // midpoint, a glued group of mutual partners at its centroid, and a lone pair between the
 // thresholds narrows continuously to d (1 - c) / (1 + c), which still grows with d.
 // x (n x 2) is in drawing pixels, shown at `pixelsPerUnit` target pixels per drawing pixel (> 0).
-// Throws InputError unless 0 <= glued < open.
+// Throws InputError unless 0 <= glued < open and holding, if given, has one flag per term (and
+// seams are renderMeshOf's, with pairOfTerm and pairPartners).
 SeamWeld weldSeams(const Eigen::MatrixX2d& x, const Seams& seams, double pixelsPerUnit,
-                   const SeamWeldOptions& options = {});
+                   const SeamWeldOptions& options = {}, const std::vector<char>* holding = nullptr);
 
 // The rectangle of drawing pixels shown on the target, x0 < x1 and y0 < y1 (y down).
 struct ViewBox {
@@ -86,6 +94,7 @@ struct OnionSkin {
   Eigen::VectorXd weights;                      // its interpolation weights (m)
   std::array<float, 3> tint{1, 1, 1};          // multiplies its colours
   float opacity = 0.3f;                         // in [0, 1]
+  const std::vector<char>* holding = nullptr;   // optional: which cohesive pairs hold (weldSeams)
 };
 
 struct Overlays {
@@ -98,6 +107,7 @@ struct Overlays {
 struct FrameDraw {
   const Eigen::MatrixX2d* positions = nullptr;  // n x 2: current positions x, drawing pixels
   Eigen::VectorXd weights;                      // m convex weights; keys with weight 0 are not drawn
+  const std::vector<char>* holding = nullptr;   // optional: which cohesive pairs hold (weldSeams)
   ViewBox view;                                 // what part of the drawing plane the target shows
   Overlays overlays;
   std::vector<OnionSkin> onion;                 // at most kMaxOnionSkins, drawn first

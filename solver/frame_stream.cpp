@@ -71,6 +71,7 @@ AnimationFrame FrameStream::solveFrame(int index, double time, bool warm) {
   const InterpolationResult plain = plain_.solve(frame.weights, start ? &*start : nullptr);
   frame.plain = plain.x;
   frame.x = plain.x;
+  frame.activePairs = plain.activePairs;
   frame.iterations = plain.iterations;
   frame.converged = plain.converged;
   if (warm) {
@@ -113,6 +114,7 @@ void FrameStream::addDynamics(AnimationFrame& frame) {
   }
   const InterpolationResult result = dynamic_->solve(frame.weights, &springs.target, &springs);
   frame.x = result.x;
+  frame.activePairs = result.activePairs;
   frame.iterations += result.iterations;
   frame.converged = frame.converged && result.converged;
   frame.deviation = deviation(frame.x, frame.plain);

@@ -21,11 +21,14 @@ TEST_CASE("animation: every bundled asset plays its timeline with finite frames 
     const BuiltScene built = buildMultimesh(scene, MultimeshBuildOptions{});
     FrameStream stream(*built.multimesh, scene.timeline, interpolationParams(scene.solver), {}, scene.dynamics);
     withDynamics += scene.dynamics.enabled();
+    size_t pairs = 0;
+    for (int key = 0; key < built.multimesh->keyCount(); ++key) pairs += built.multimesh->cohesivePairs(key).size();
     const double fps = scene.timeline.fps();
     while (!stream.done()) {
       const AnimationFrame frame = stream.next();
       INFO("frame " << frame.index);
       REQUIRE(frame.x.allFinite());
+      REQUIRE(frame.activePairs.size() == pairs);
       CHECK(frame.deviation < 0.5);
       // A key mark that falls on this frame: the frame is that key, where it was drawn.
       for (const TimelineMark& mark : scene.timeline.marks()) {

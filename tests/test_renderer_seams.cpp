@@ -3,6 +3,7 @@
 #include "render_fixtures.h"
 #include "shape_generators.h"
 
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
 
@@ -116,6 +117,37 @@ TEST_CASE("seams: gaps under `glued` target pixels are welded, gaps of `open` or
   }
   CHECK_THROWS_AS(weldSeams(glued, seams, 1.0, {1.0, 1.0}), InputError);
   CHECK_THROWS_AS(weldSeams(glued, seams, 0.0, options), InputError);
+}
+
+TEST_CASE("seams: a pair the solver says holds is welded shut at any gap; the others follow the pixel rule") {
+  // Just before a stretched cut lets go its held pairs open by a pixel or more at the picture's
+  // scale: with the solver's flags they stay shut, without them they would show as a speck.
+  const CutSquare cut = cutSquare();
+  const Seams seams = renderMeshOf(cut.mesh, cutSquareArtwork()).seams;
+  REQUIRE(seams.pairOfTerm.size() == 8);
+  std::vector<char> holding(8, 0);
+  std::fill(holding.begin(), holding.begin() + 4, 1);  // pairs 0-3 hold: vertices 0-4 of each side
+  const Eigen::MatrixX2d apart = shiftedRight(cut.mesh.keyPositions(0), cut.right, 2.0);
+  const SeamWeld plain = weldSeams(apart, seams, 1.0);
+  const SeamWeld held = weldSeams(apart, seams, 1.0, {}, &holding);
+  for (size_t j = 0; j < cut.left.size(); ++j) {
+    const int l = cut.left[j], r = cut.right[j];
+    INFO("vertex pair " << j);
+    CHECK((plain.positions.row(l) - plain.positions.row(r)).norm() == Approx(2.0));
+    CHECK(plain.closure[l] == 0.0f);
+    if (j <= 4) {
+      CHECK((held.positions.row(l) - held.positions.row(r)).norm() < 1e-12);
+      CHECK(held.positions(l, 0) == Approx(25.0));
+      CHECK(held.closure[l] == 1.0f);
+      CHECK(held.closure[r] == 1.0f);
+    } else {
+      CHECK(held.positions.row(l) == apart.row(l));
+      CHECK(held.positions.row(r) == apart.row(r));
+      CHECK(held.closure[l] == 0.0f);
+    }
+  }
+  const std::vector<char> tooFew(7, 1);
+  CHECK_THROWS_AS(weldSeams(apart, seams, 1.0, {}, &tooFew), InputError);
 }
 
 TEST_CASE("seams: the tip of a cut, its own partner, takes its pair's closure") {
