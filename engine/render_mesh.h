@@ -60,16 +60,17 @@ struct SeamWeld {
 
 // A pair's closure is c = clamp((open - d) / (open - glued), 0, 1), where d is the larger of its
 // two end gaps |x_a - x_c| and |x_b - x_d|, or 1 where the solver says the pair holds (`holding`,
-// optional: InterpolationResult::activePairs of x, one flag per term of Seams::pairOfTerm; a
-// pair of several keys holds if any of its terms does): a held pair is glued by definition, even
-// where it has stretched to a pixel or more just before it lets go. A vertex's closure is the largest of its pairs' (so the
-// tip of a cut, where a == c, gets its pair's), and a vertex next to a cut takes the largest of its
-// neighbours' on it: the triangles along a glued cut have closure 1 throughout (an open key's
-// partly transparent texels can reach a few pixels into them where its map stretches), and it
-// falls to 0 across the next ring of triangles. Welding: each partner pair {u, v} has c_uv from its
-// own gap (1 where a held pair collocates them), and u moves to u + sum_v c_uv (v - u) / (1 + sum_v c_uv): a glued pair meets at its
-// midpoint, a glued group of mutual partners at its centroid, and a lone pair between the
-// thresholds narrows continuously to d (1 - c) / (1 + c), which still grows with d.
+// optional: InterpolationResult::activePairs of x, one flag per term of Seams::pairOfTerm; a pair
+// of several keys holds if any of its terms does): a held pair is glued by definition, even where
+// it has stretched to a pixel or more just before it lets go. A vertex's closure is the largest
+// of its pairs' (so the tip of a cut, where a == c, gets its pair's), and a vertex next to a cut
+// takes the largest of its neighbours' on it: the triangles along a glued cut have closure 1
+// throughout (an open key's partly transparent texels can reach a few pixels into them where its
+// map stretches), and it falls to 0 across the next ring of triangles. Welding: each partner pair
+// {u, v} has c_uv from its own gap (1 where a held pair collocates them), and u moves to
+// u + sum_v c_uv (v - u) / (1 + sum_v c_uv): a glued pair meets at its midpoint, a glued group of
+// mutual partners at its centroid, and a lone pair between the thresholds narrows continuously
+// to d (1 - c) / (1 + c), which still grows with d.
 // x (n x 2) is in drawing pixels, shown at `pixelsPerUnit` target pixels per drawing pixel (> 0).
 // Throws InputError unless 0 <= glued < open and holding, if given, has one flag per term (and
 // seams are renderMeshOf's, with pairOfTerm and pairPartners).
