@@ -58,11 +58,11 @@ TEST_CASE("interpolation: on every bundled asset, halving a step in w halves the
   // Each sweep from key i to key i + 1 takes 2N steps, solved as playback solves them (default
   // tolerance, starts from WarmStartPredictor). On a continuous path the larger half of each
   // double step carries about half its move (the rest is curvature: at most 0.60 measured at
-  // N = 16, also when solved to 1e-7); a jump puts all of it in one half. A cohesive pair letting go is a
-  // jump by design (disc-ring's hole opens by 13% of the shape's size in one step), so double
-  // steps in which some pair changes state are counted apart. That includes the key's own pairs
-  // when its weight reaches zero: they hold with a stiffness that vanishes with the weight, so
-  // the last of them let go just before it does.
+  // N = 16, also when solved to 1e-7); a jump puts all of it in one half. A cohesive pair
+  // letting go is a jump by design (disc-ring's hole opens by 13% of the shape's size in one
+  // step), so double steps in which some pair changes state are counted apart. That includes a
+  // key's own pairs when its weight reaches zero: they hold with a stiffness that vanishes with
+  // the weight, so the last of them let go just before it does.
   const int N = 16;
   double largestRelease = 0;
   for (const std::string& file : test::bundledSceneFiles(INBETWEEN_ASSETS)) {
