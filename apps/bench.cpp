@@ -1,11 +1,11 @@
 #include "bench.h"
 
+#include "animation/warm_start.h"
 #include "cli.h"
-#include "error.h"
-#include "interpolator.h"
-#include "reference_arap.h"
-#include "shape_generators.h"
-#include "warm_start.h"
+#include "core/error.h"
+#include "interpolation/interpolator.h"
+#include "testkit/reference_arap.h"
+#include "testkit/shape_generators.h"
 
 #include <nlohmann/json.hpp>
 
@@ -279,7 +279,9 @@ int runBench(const std::vector<std::string>& args) {
   }
   if (args[0] == "comesh") return runBenchComesh(std::vector<std::string>(args.begin() + 1, args.end()));
   if (args[0] == "anim") return runBenchAnim(std::vector<std::string>(args.begin() + 1, args.end()));
+#ifdef INBETWEEN_WITH_ENGINE
   if (args[0] == "render") return runBenchRender(std::vector<std::string>(args.begin() + 1, args.end()));
+#endif
   if (args[0] == "cut") return runBenchCut(std::vector<std::string>(args.begin() + 1, args.end()));
   if (args[0] != "interp") throw InputError("bench: unknown case '" + args[0] + "' (available: interp, comesh, anim, render, cut)");
   const cli::Arguments a("bench", std::vector<std::string>(args.begin() + 1, args.end()),

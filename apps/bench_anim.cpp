@@ -2,9 +2,9 @@
 // one JSON line per scene.
 #include "bench.h"
 
+#include "animation/frame_stream.h"
 #include "cli.h"
-#include "error.h"
-#include "frame_stream.h"
+#include "core/error.h"
 #include "progress.h"
 #include "scene_mesh.h"
 

@@ -2,9 +2,9 @@
 #include "bench.h"
 
 #include "cli.h"
-#include "comesh.h"
-#include "error.h"
-#include "multimesh_builder.h"
+#include "comesh/comesh.h"
+#include "core/error.h"
+#include "meshing/multimesh_builder.h"
 
 #include <nlohmann/json.hpp>
 

@@ -3,10 +3,10 @@
 #include "bench.h"
 
 #include "cli.h"
-#include "error.h"
-#include "interpolator.h"
+#include "core/error.h"
+#include "interpolation/interpolator.h"
 #include "progress.h"
-#include "shape_generators.h"
+#include "testkit/shape_generators.h"
 
 #include <nlohmann/json.hpp>
 

@@ -3,10 +3,10 @@
 #include "bench.h"
 
 #include "cli.h"
-#include "error.h"
-#include "offscreen_renderer.h"
+#include "core/error.h"
 #include "render_options.h"
-#include "shape_generators.h"
+#include "renderers/offscreen_renderer.h"
+#include "testkit/shape_generators.h"
 
 #include <nlohmann/json.hpp>
 

@@ -1,6 +1,6 @@
 #include "cli.h"
 
-#include "error.h"
+#include "core/error.h"
 
 #include <algorithm>
 #include <cstdio>

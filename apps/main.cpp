@@ -2,8 +2,10 @@
 // Exit codes: 0 success, 2 bad input (message names the file, field or option), 1 internal error.
 #include "bench.h"
 #include "mesh_command.h"
+#ifdef INBETWEEN_WITH_ENGINE
 #include "render_command.h"
-#include "error.h"
+#endif
+#include "core/error.h"
 
 #include <cstdio>
 #include <exception>
@@ -42,7 +44,11 @@ int run(const std::vector<std::string>& args) {
   const std::vector<std::string> rest(args.begin() + 1, args.end());
   if (command == "bench") return ib::runBench(rest);
   if (command == "mesh") return ib::runMesh(rest);
+#ifdef INBETWEEN_WITH_ENGINE
   if (command == "render") return ib::runRender(rest);
+#else
+  if (command == "render") throw ib::InputError("render: this inbetween was built without the engine (INBETWEEN_ENGINE=OFF)");
+#endif
   throw ib::InputError("unknown command '" + command + "' (see `inbetween --help`)");
 }
 

@@ -1,15 +1,15 @@
 #include "mesh_command.h"
 
-#include "atomic_file.h"
 #include "cli.h"
-#include "error.h"
-#include "comesh.h"
+#include "comesh/comesh.h"
+#include "core/atomic_file.h"
+#include "core/error.h"
 #include "mesh_report.h"
-#include "mesh_svg.h"
-#include "multimesh_builder.h"
-#include "multimesh_io.h"
+#include "meshing/multimesh_builder.h"
+#include "meshing/stiffness_paint.h"
+#include "multimesh/mesh_svg.h"
+#include "multimesh/multimesh_io.h"
 #include "progress.h"
-#include "stiffness_paint.h"
 
 #include <cstdio>
 #include <filesystem>

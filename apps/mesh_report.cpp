@@ -1,7 +1,7 @@
 #include "mesh_report.h"
 
-#include "mesh_quality.h"
-#include "untangle.h"
+#include "meshing/untangle.h"
+#include "multimesh/mesh_quality.h"
 
 #include <Eigen/Dense>
 

@@ -2,8 +2,8 @@
 // and after Comesh Optimization) and the Comesh row of the paper's Table 2, as JSON and as text.
 #pragma once
 
-#include "comesh.h"
-#include "multimesh.h"
+#include "comesh/comesh.h"
+#include "multimesh/multimesh.h"
 
 #include <nlohmann/json.hpp>
 #include <string>

@@ -1,8 +1,8 @@
 #include "render_command.h"
 
-#include "contact_sheet.h"
-#include "error.h"
-#include "frame_stream.h"
+#include "animation/frame_stream.h"
+#include "core/error.h"
+#include "output/contact_sheet.h"
 #include "render_options.h"
 
 #include <array>

@@ -1,7 +1,7 @@
 #include "render_options.h"
 
-#include "error.h"
-#include "vulkan_check.h"
+#include "core/error.h"
+#include "gpu/vulkan_check.h"
 
 #include <algorithm>
 #include <cctype>

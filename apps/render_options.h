@@ -3,9 +3,9 @@
 #pragma once
 
 #include "cli.h"
-#include "offscreen_renderer.h"
+#include "gpu/vulkan_context.h"
+#include "renderers/offscreen_renderer.h"
 #include "scene_mesh.h"
-#include "vulkan_context.h"
 
 #include <array>
 #include <optional>

@@ -1,10 +1,10 @@
 #include "scene_mesh.h"
 
-#include "comesh.h"
-#include "error.h"
-#include "multimesh_builder.h"
-#include "multimesh_io.h"
-#include "stiffness_paint.h"
+#include "comesh/comesh.h"
+#include "core/error.h"
+#include "meshing/multimesh_builder.h"
+#include "meshing/stiffness_paint.h"
+#include "multimesh/multimesh_io.h"
 
 #include <algorithm>
 #include <cstdio>

@@ -2,9 +2,9 @@
 // still current, a given file, or a fresh build (with Comesh Optimization by default).
 #pragma once
 
-#include "multimesh.h"
+#include "multimesh/multimesh.h"
 #include "progress.h"
-#include "scene.h"
+#include "scene/scene.h"
 
 #include <string>
 

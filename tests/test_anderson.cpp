@@ -1,4 +1,4 @@
-#include "anderson.h"
+#include "linalg/anderson.h"
 
 #include <Eigen/Dense>
 #include <catch2/catch.hpp>

@@ -1,9 +1,9 @@
-#include "example_scenes.h"
-#include "frame_stream.h"
-#include "interpolator.h"
-#include "warm_start.h"
-#include "multimesh_builder.h"
-#include "scene.h"
+#include "animation/frame_stream.h"
+#include "animation/warm_start.h"
+#include "interpolation/interpolator.h"
+#include "meshing/multimesh_builder.h"
+#include "scene/scene.h"
+#include "testkit/example_scenes.h"
 
 #include <catch2/catch.hpp>
 

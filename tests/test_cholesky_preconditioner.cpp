@@ -1,5 +1,5 @@
-#include "cholesky_preconditioner.h"
-#include "shape_generators.h"
+#include "linalg/cholesky_preconditioner.h"
+#include "testkit/shape_generators.h"
 
 #include <catch2/catch.hpp>
 

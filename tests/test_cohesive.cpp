@@ -1,6 +1,6 @@
-#include "cohesive_energy.h"
-#include "fixtures.h"
-#include "interpolator.h"
+#include "interpolation/cohesive_energy.h"
+#include "interpolation/interpolator.h"
+#include "testkit/fixtures.h"
 
 #include <catch2/catch.hpp>
 #include <algorithm>

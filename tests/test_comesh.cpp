@@ -1,10 +1,10 @@
-#include "comesh.h"
-#include "drawings.h"
-#include "example_scenes.h"
-#include "interpolator.h"
-#include "mesh_quality.h"
-#include "multimesh_builder.h"
-#include "shape_checks.h"
+#include "comesh/comesh.h"
+#include "interpolation/interpolator.h"
+#include "meshing/multimesh_builder.h"
+#include "multimesh/mesh_quality.h"
+#include "testkit/drawings.h"
+#include "testkit/example_scenes.h"
+#include "testkit/shape_checks.h"
 
 #include <catch2/catch.hpp>
 #include <Eigen/Dense>

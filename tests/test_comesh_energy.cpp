@@ -1,7 +1,7 @@
-#include "comesh_block_energy.h"
-#include "comesh_energy.h"
-#include "mesh_quality.h"
-#include "shape_generators.h"
+#include "comesh/comesh_block_energy.h"
+#include "comesh/comesh_energy.h"
+#include "multimesh/mesh_quality.h"
+#include "testkit/shape_generators.h"
 
 #include <catch2/catch.hpp>
 #include <cmath>

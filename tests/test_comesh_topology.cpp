@@ -1,6 +1,6 @@
-#include "comesh_mesh.h"
-#include "comesh_topology.h"
-#include "shape_generators.h"
+#include "comesh/comesh_mesh.h"
+#include "comesh/comesh_topology.h"
+#include "testkit/shape_generators.h"
 
 #include <catch2/catch.hpp>
 #include <algorithm>

@@ -1,5 +1,5 @@
-#include "contact_sheet.h"
-#include "error.h"
+#include "core/error.h"
+#include "output/contact_sheet.h"
 #include "render_fixtures.h"
 
 #include <catch2/catch.hpp>

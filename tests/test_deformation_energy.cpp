@@ -1,5 +1,5 @@
-#include "deformation_energy.h"
-#include "shape_generators.h"
+#include "interpolation/deformation_energy.h"
+#include "testkit/shape_generators.h"
 
 #include <catch2/catch.hpp>
 #include <omp.h>

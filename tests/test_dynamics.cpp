@@ -1,6 +1,6 @@
-#include "error.h"
-#include "fixtures.h"
-#include "frame_stream.h"
+#include "animation/frame_stream.h"
+#include "core/error.h"
+#include "testkit/fixtures.h"
 
 #include <catch2/catch.hpp>
 #include <cmath>

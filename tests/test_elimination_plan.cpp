@@ -1,4 +1,4 @@
-#include "elimination_plan.h"
+#include "linalg/elimination_plan.h"
 
 #include <catch2/catch.hpp>
 

@@ -1,4 +1,4 @@
-#include "fixed_pattern.h"
+#include "linalg/fixed_pattern.h"
 
 #include <catch2/catch.hpp>
 

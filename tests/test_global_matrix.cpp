@@ -1,5 +1,5 @@
-#include "fixtures.h"
-#include "global_matrix.h"
+#include "interpolation/global_matrix.h"
+#include "testkit/fixtures.h"
 
 #include <catch2/catch.hpp>
 #include <memory>

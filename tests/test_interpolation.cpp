@@ -1,7 +1,7 @@
-#include "error.h"
-#include "fixtures.h"
-#include "interpolator.h"
-#include "shape_checks.h"
+#include "core/error.h"
+#include "interpolation/interpolator.h"
+#include "testkit/fixtures.h"
+#include "testkit/shape_checks.h"
 
 #include <Eigen/Dense>
 #include <catch2/catch.hpp>

@@ -1,7 +1,7 @@
-#include "error.h"
-#include "key_shape.h"
-#include "shared_boundary.h"
-#include "untangle.h"
+#include "core/error.h"
+#include "meshing/key_shape.h"
+#include "meshing/shared_boundary.h"
+#include "meshing/untangle.h"
 
 #include <catch2/catch.hpp>
 

@@ -1,6 +1,6 @@
-#include "error.h"
-#include "fixtures.h"
-#include "multimesh.h"
+#include "core/error.h"
+#include "multimesh/multimesh.h"
+#include "testkit/fixtures.h"
 
 #include <catch2/catch.hpp>
 

@@ -1,9 +1,9 @@
-#include "error.h"
-#include "example_scenes.h"
-#include "drawings.h"
-#include "multimesh_builder.h"
-#include "plane_geometry.h"
-#include "shape_checks.h"
+#include "core/error.h"
+#include "core/plane_geometry.h"
+#include "meshing/multimesh_builder.h"
+#include "testkit/drawings.h"
+#include "testkit/example_scenes.h"
+#include "testkit/shape_checks.h"
 
 #include <catch2/catch.hpp>
 #include <filesystem>

@@ -1,7 +1,7 @@
-#include "atomic_file.h"
-#include "error.h"
-#include "fixtures.h"
-#include "multimesh_io.h"
+#include "core/atomic_file.h"
+#include "core/error.h"
+#include "multimesh/multimesh_io.h"
+#include "testkit/fixtures.h"
 
 #include <catch2/catch.hpp>
 #include <cstdio>

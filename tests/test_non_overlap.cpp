@@ -1,5 +1,5 @@
-#include "fixtures.h"
-#include "interpolator.h"
+#include "interpolation/interpolator.h"
+#include "testkit/fixtures.h"
 
 #include <catch2/catch.hpp>
 

@@ -1,4 +1,4 @@
-#include "plane_geometry.h"
+#include "core/plane_geometry.h"
 
 #include <catch2/catch.hpp>
 

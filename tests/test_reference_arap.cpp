@@ -1,7 +1,7 @@
-#include "deformation_energy.h"
-#include "error.h"
-#include "reference_arap.h"
-#include "shape_generators.h"
+#include "core/error.h"
+#include "interpolation/deformation_energy.h"
+#include "testkit/reference_arap.h"
+#include "testkit/shape_generators.h"
 
 #include <catch2/catch.hpp>
 #include <cmath>

@@ -1,9 +1,10 @@
-#include "example_scenes.h"
-#include "interpolator.h"
-#include "multimesh_builder.h"
-#include "offscreen_renderer.h"
+#include "interpolation/interpolator.h"
+#include "meshing/multimesh_builder.h"
 #include "render_fixtures.h"
-#include "scene.h"
+#include "renderers/offscreen_renderer.h"
+#include "scene/scene.h"
+#include "testkit/example_scenes.h"
+#include "vulkan_fixtures.h"
 
 #include <catch2/catch.hpp>
 

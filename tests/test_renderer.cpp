@@ -1,6 +1,7 @@
-#include "error.h"
-#include "offscreen_renderer.h"
+#include "core/error.h"
 #include "render_fixtures.h"
+#include "renderers/offscreen_renderer.h"
+#include "vulkan_fixtures.h"
 
 #include <catch2/catch.hpp>
 #include <cmath>

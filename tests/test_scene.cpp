@@ -1,7 +1,8 @@
-#include "error.h"
-#include "scene.h"
+#include "core/error.h"
+#include "scene/scene.h"
 
 #include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
 
 using namespace ib;
 using nlohmann::json;

@@ -1,6 +1,6 @@
-#include "fixtures.h"
-#include "interpolator.h"
-#include "reference_local_global.h"
+#include "interpolation/interpolator.h"
+#include "testkit/fixtures.h"
+#include "testkit/reference_local_global.h"
 
 #include <catch2/catch.hpp>
 #include <cmath>

@@ -1,7 +1,7 @@
-#include "example_scenes.h"
-#include "multimesh_builder.h"
-#include "scene.h"
-#include "spatial_order.h"
+#include "core/spatial_order.h"
+#include "meshing/multimesh_builder.h"
+#include "scene/scene.h"
+#include "testkit/example_scenes.h"
 
 #include <catch2/catch.hpp>
 

@@ -1,9 +1,9 @@
-#include "error.h"
-#include "interpolator.h"
-#include "png_image.h"
-#include "shape_checks.h"
-#include "shape_generators.h"
-#include "stiffness_paint.h"
+#include "core/error.h"
+#include "core/png_image.h"
+#include "interpolation/interpolator.h"
+#include "meshing/stiffness_paint.h"
+#include "testkit/shape_checks.h"
+#include "testkit/shape_generators.h"
 
 #include <catch2/catch.hpp>
 #include <algorithm>

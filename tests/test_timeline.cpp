@@ -1,6 +1,7 @@
-#include "easing.h"
-#include "error.h"
-#include "timeline.h"
+#include "animation/easing.h"
+#include "animation/timeline.h"
+#include "core/error.h"
+#include "scene/scene_animation.h"
 
 #include <catch2/catch.hpp>
 

@@ -1,8 +1,8 @@
-#include "atomic_file.h"
-#include "drawings.h"
-#include "error.h"
-#include "png_image.h"
-#include "tracing.h"
+#include "core/atomic_file.h"
+#include "core/error.h"
+#include "core/png_image.h"
+#include "meshing/tracing.h"
+#include "testkit/drawings.h"
 
 #include <catch2/catch.hpp>
 #include <cmath>

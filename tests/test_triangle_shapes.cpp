@@ -1,5 +1,5 @@
-#include "shape_generators.h"
-#include "triangle_shapes.h"
+#include "comesh/triangle_shapes.h"
+#include "testkit/shape_generators.h"
 
 #include <catch2/catch.hpp>
 

@@ -1,5 +1,5 @@
-#include "vulkan_check.h"
-#include "vulkan_context.h"
+#include "gpu/vulkan_check.h"
+#include "gpu/vulkan_context.h"
 
 #include <catch2/catch.hpp>
 

@@ -1,6 +1,6 @@
-#include "fixtures.h"
-#include "interpolator.h"
-#include "warm_start.h"
+#include "animation/warm_start.h"
+#include "interpolation/interpolator.h"
+#include "testkit/fixtures.h"
 
 #include <catch2/catch.hpp>
 

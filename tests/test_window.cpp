@@ -1,5 +1,5 @@
 #include "render_fixtures.h"
-#include "window_presenter.h"
+#include "renderers/window_presenter.h"
 
 #include <catch2/catch.hpp>
 #include <chrono>

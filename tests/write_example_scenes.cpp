@@ -1,6 +1,6 @@
 // Writes the example scenes (and, with --bad, the bad ones) into a folder:
 // write_example_scenes FOLDER [--bad]. Used for assets/ and by the command-line tests.
-#include "example_scenes.h"
+#include "testkit/example_scenes.h"
 
 #include <cstdio>
 #include <exception>

@@ -1,0 +1,156 @@
+#include "output/render_mesh.h"
+
+#include "core/error.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+#include <string>
+
+namespace ib::render {
+
+namespace {
+
+Seams seamsOf(const Multimesh& mesh) {
+  std::map<std::array<int, 4>, int> pairs;  // pair -> its index in Seams::pairs
+  std::vector<std::array<int, 4>> terms;
+  std::set<Edge> partners;
+  for (int k = 0; k < mesh.keyCount(); ++k)
+    for (const CohesivePair& p : mesh.cohesivePairs(k)) {
+      terms.push_back({p.a, p.b, p.c, p.d});
+      pairs.insert({terms.back(), 0});
+      for (const Edge& e : {Edge{p.a, p.c}, Edge{p.b, p.d}})
+        if (e[0] != e[1]) partners.insert({std::min(e[0], e[1]), std::max(e[0], e[1])});
+    }
+  Seams out;
+  std::vector<char> onCut(mesh.vertexCount(), 0);
+  for (auto& [p, index] : pairs) {
+    index = static_cast<int>(out.pairs.size());
+    out.pairs.push_back({p[0], p[1], p[2], p[3]});
+    for (int v : p) onCut[v] = 1;
+  }
+  for (const std::array<int, 4>& t : terms) out.pairOfTerm.push_back(pairs.at(t));
+  out.partners.assign(partners.begin(), partners.end());
+  const auto partnerIndex = [&](int u, int v) {
+    if (u == v) return -1;
+    const Edge e{std::min(u, v), std::max(u, v)};
+    return static_cast<int>(std::lower_bound(out.partners.begin(), out.partners.end(), e) - out.partners.begin());
+  };
+  for (const CohesivePair& p : out.pairs) out.pairPartners.push_back({partnerIndex(p.a, p.c), partnerIndex(p.b, p.d)});
+  std::set<Edge> ring;
+  for (const Triangle& t : mesh.triangles())
+    for (int e = 0; e < 3; ++e)
+      for (const auto& [v, w] : {std::pair{t[e], t[(e + 1) % 3]}, std::pair{t[(e + 1) % 3], t[e]}})
+        if (!onCut[v] && onCut[w]) ring.insert({v, w});
+  out.ring.assign(ring.begin(), ring.end());
+  return out;
+}
+
+// 1 at gaps (target pixels) up to `glued`, 0 from `open` on, linear in between.
+double closureAt(double gap, const SeamWeldOptions& options) {
+  return std::clamp((options.open - gap) / (options.open - options.glued), 0.0, 1.0);
+}
+
+}  // namespace
+
+RenderMesh renderMeshOf(const Multimesh& mesh, std::vector<RgbaImage> artwork, std::vector<int> features) {
+  if (static_cast<int>(artwork.size()) != mesh.keyCount())
+    throw InputError("render: " + std::to_string(artwork.size()) + " drawings for " + std::to_string(mesh.keyCount()) +
+                     " keys");
+  RenderMesh out;
+  out.vertexCount = mesh.vertexCount();
+  out.triangles = mesh.triangles();
+  for (int k = 0; k < mesh.keyCount(); ++k) {
+    const RgbaImage& image = artwork[k];
+    if (image.width <= 0 || image.height <= 0) throw InputError("render: the drawing of key " + std::to_string(k) + " is empty");
+    Eigen::MatrixX2f uv = mesh.keyPositions(k).cast<float>();
+    uv.col(0) /= static_cast<float>(image.width);
+    uv.col(1) /= static_cast<float>(image.height);
+    out.keyUV.push_back(std::move(uv));
+    std::vector<Edge> cohesive;
+    for (const CohesivePair& p : mesh.cohesivePairs(k)) {
+      cohesive.push_back({p.a, p.b});
+      cohesive.push_back({p.c, p.d});
+    }
+    out.cohesiveEdges.push_back(std::move(cohesive));
+  }
+  out.seams = seamsOf(mesh);
+  std::set<Edge> edges;
+  for (const Triangle& t : out.triangles)
+    for (int e = 0; e < 3; ++e) edges.insert({std::min(t[e], t[(e + 1) % 3]), std::max(t[e], t[(e + 1) % 3])});
+  out.edges.assign(edges.begin(), edges.end());
+  for (int f : features)
+    if (f < 0 || f >= out.vertexCount) throw InputError("render: feature vertex " + std::to_string(f) + " is not in the mesh");
+  out.features = std::move(features);
+  out.artwork = std::move(artwork);
+  return out;
+}
+
+SeamWeld weldSeams(const Eigen::MatrixX2d& x, const Seams& seams, double pixelsPerUnit, const SeamWeldOptions& options,
+                   const std::vector<char>* holding) {
+  if (!(options.glued >= 0 && options.open > options.glued))
+    throw InputError("render: seam welding needs 0 <= glued < open pixels");
+  if (!(pixelsPerUnit > 0 && std::isfinite(pixelsPerUnit))) throw InputError("render: seam welding needs a positive scale");
+  if (holding && holding->size() != seams.pairOfTerm.size())
+    throw InputError("render: " + std::to_string(holding->size()) + " holding flags for " +
+                     std::to_string(seams.pairOfTerm.size()) + " cohesive pairs");
+  if (holding && seams.pairPartners.size() != seams.pairs.size())
+    throw InputError("render: holding flags need seams with pairPartners (renderMeshOf's)");
+  const Eigen::Index n = x.rows();
+  SeamWeld out{x, std::vector<float>(n, 0.0f)};
+  if (seams.pairs.empty()) return out;
+  std::vector<char> held(seams.pairs.size(), 0), heldPartner(seams.partners.size(), 0);
+  for (size_t t = 0; holding && t < holding->size(); ++t)
+    if ((*holding)[t]) held[seams.pairOfTerm[t]] = 1;
+  for (size_t j = 0; j < seams.pairs.size(); ++j) {
+    const CohesivePair& p = seams.pairs[j];
+    const double gap = pixelsPerUnit * std::max((x.row(p.a) - x.row(p.c)).norm(), (x.row(p.b) - x.row(p.d)).norm());
+    const float c = held[j] ? 1.0f : static_cast<float>(closureAt(gap, options));
+    for (int v : {p.a, p.b, p.c, p.d}) out.closure[v] = std::max(out.closure[v], c);
+    if (held[j])
+      for (int e : seams.pairPartners[j])
+        if (e >= 0) heldPartner[e] = 1;
+  }
+  for (const Edge& e : seams.ring) out.closure[e[0]] = std::max(out.closure[e[0]], out.closure[e[1]]);
+  Eigen::MatrixX2d pull = Eigen::MatrixX2d::Zero(n, 2);  // sum_v c_uv (v - u) per vertex u
+  Eigen::VectorXd pulls = Eigen::VectorXd::Zero(n);       // sum_v c_uv
+  for (size_t k = 0; k < seams.partners.size(); ++k) {
+    const Edge& e = seams.partners[k];
+    const Eigen::RowVector2d d = x.row(e[1]) - x.row(e[0]);
+    const double c = heldPartner[k] ? 1.0 : closureAt(pixelsPerUnit * d.norm(), options);
+    pull.row(e[0]) += c * d;
+    pull.row(e[1]) -= c * d;
+    pulls[e[0]] += c;
+    pulls[e[1]] += c;
+  }
+  for (Eigen::Index v = 0; v < n; ++v)
+    if (pulls[v] > 0) out.positions.row(v) += pull.row(v) / (1 + pulls[v]);
+  return out;
+}
+
+ViewBox fitView(const ViewBox& bounds, int width, int height, double margin) {
+  const double w = std::max(bounds.x1 - bounds.x0, 1e-9), h = std::max(bounds.y1 - bounds.y0, 1e-9);
+  const double grow = margin * std::max(w, h);
+  double halfW = 0.5 * w + grow, halfH = 0.5 * h + grow;
+  const double aspect = static_cast<double>(width) / height;
+  if (halfW / halfH < aspect) halfW = halfH * aspect;
+  else halfH = halfW / aspect;
+  const double cx = 0.5 * (bounds.x0 + bounds.x1), cy = 0.5 * (bounds.y0 + bounds.y1);
+  return {cx - halfW, cy - halfH, cx + halfW, cy + halfH};
+}
+
+ViewBox boundsOf(const std::vector<Eigen::MatrixX2d>& points) {
+  ViewBox box{INFINITY, INFINITY, -INFINITY, -INFINITY};
+  for (const Eigen::MatrixX2d& p : points) {
+    if (p.rows() == 0) continue;
+    box.x0 = std::min(box.x0, p.col(0).minCoeff());
+    box.y0 = std::min(box.y0, p.col(1).minCoeff());
+    box.x1 = std::max(box.x1, p.col(0).maxCoeff());
+    box.y1 = std::max(box.y1, p.col(1).maxCoeff());
+  }
+  if (!(box.x0 <= box.x1)) throw InputError("render: nothing to frame (no positions)");
+  return box;
+}
+
+}  // namespace ib::render

@@ -1,0 +1,27 @@
+// Every key's drawing in one 2D-array texture, one layer per key, premultiplied alpha, RGBA8
+// UNORM (blending happens in the drawings' own colour values, as in 2D paint programs). Layers
+// share the largest drawing's size; a smaller drawing sits in its layer's top-left corner with
+// transparent padding, so its UVs scale by drawing size / layer size. A full mip chain (linear
+// blits of the premultiplied texels) and trilinear filtering keep line art smooth when drawn smaller.
+#pragma once
+
+#include "core/png_image.h"
+#include "gpu/gpu_resources.h"
+
+#include <vector>
+
+namespace ib::vk {
+
+struct ArtworkTexture {
+  GpuImage image;           // layers = keys, every mip level in VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL
+  SamplerObject sampler;    // trilinear, clamped to the edge
+  VkExtent2D layerSize{};   // pixels
+};
+
+// Throws VulkanError when the device cannot hold it (e.g. a layer above maxImageDimension2D).
+ArtworkTexture uploadArtwork(const VulkanContext& context, VkCommandPool pool, const std::vector<RgbaImage>& drawings);
+
+// Straight to premultiplied alpha, rounding: c * a / 255.
+RgbaImage premultiplied(const RgbaImage& image);
+
+}  // namespace ib::vk

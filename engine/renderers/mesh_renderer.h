@@ -1,0 +1,64 @@
+// Draws a RenderMesh at the current positions with every active key's artwork blended by the
+// weights (premultiplied alpha), then the overlays, into a render pass created by
+// createColorRenderPass. Heavy setup once (artwork upload, UVs, indices, pipelines); per frame only
+// positions (welded along glued cuts, with each vertex's closure: weldSeams) and overlay vertices
+// are written, into the stream buffer of the frame's slot, so the GPU keeps drawing earlier slots
+// meanwhile (libigl's precompute-then-solve, for pixels).
+#pragma once
+
+#include "gpu/gpu_resources.h"
+#include "output/render_mesh.h"
+#include "renderers/artwork_texture.h"
+#include "renderers/renderer_pipelines.h"
+
+#include <vector>
+
+namespace ib::render {
+
+class MeshRenderer {
+ public:
+  // `pass` and `samples` are the target's; `slots` is how many frames may be in flight. Uploads the
+  // artwork (one array layer per key, premultiplied) through `pool`. Throws VulkanError.
+  MeshRenderer(const vk::VulkanContext& context, VkCommandPool pool, const RenderMesh& mesh, VkRenderPass pass,
+               VkSampleCountFlagBits samples, int slots);
+
+  // Records `frame` into `cmd`, inside a begun render pass of `extent` pixels. Writes slot `slot`'s
+  // stream buffer: the caller must know that slot's previous frame has finished. Throws InputError
+  // for positions or weights of the wrong size, negative or non-finite weights, or too many onion skins.
+  void record(VkCommandBuffer cmd, int slot, VkExtent2D extent, const FrameDraw& frame);
+
+  int slots() const { return static_cast<int>(streams_.size()); }
+
+ private:
+  struct Active {
+    int count = 0;
+    float weights[kMaxActiveKeys] = {};
+    int layers[kMaxActiveKeys] = {};
+  };
+  Active activeKeys(const Eigen::VectorXd& weights) const;
+  // pixelsPerUnit: target pixels per drawing pixel, for weldSeams.
+  void drawArtwork(VkCommandBuffer cmd, const float view[4], double pixelsPerUnit, const Eigen::MatrixX2d& x,
+                   const Eigen::VectorXd& weights, const std::vector<char>* holding, const float tint[4], int slot,
+                   VkDeviceSize& offset);
+  void drawOverlays(VkCommandBuffer cmd, const float view[4], VkExtent2D extent, const FrameDraw& frame, int slot,
+                    VkDeviceSize offset);
+
+  const vk::VulkanContext* context_;
+  int vertexCount_ = 0;
+  int keyCount_ = 0;
+  uint32_t indexCount_ = 0;
+  std::vector<Edge> edges_;                      // overlay geometry, copied from the RenderMesh
+  std::vector<std::vector<Edge>> cohesiveEdges_;
+  Seams seams_;                                  // welded in every frame (weldSeams)
+  std::vector<int> features_;
+  VkDeviceSize overlayCapacity_ = 0;             // overlay vertices a stream buffer holds
+  vk::RendererPipelines pipelines_;
+  vk::ArtworkTexture artwork_;
+  vk::GpuBuffer uvs_;
+  vk::GpuBuffer indices_;
+  vk::DescriptorPoolObject descriptorPool_;
+  VkDescriptorSet descriptorSet_ = VK_NULL_HANDLE;  // freed with its pool
+  std::vector<vk::GpuBuffer> streams_;              // [slot]: positions, then overlay vertices
+};
+
+}  // namespace ib::render

@@ -1,0 +1,52 @@
+// The renderer's graphics pipelines for one render pass and sample count:
+// - artwork: triangle list, vertex binding 0 = ArtworkVertex (vec2 position + float seam closure,
+//   12 bytes), descriptor set 0 =
+//   {0: the artwork's sampler2DArray, 1: the per-key UVs storage buffer}, push constants ArtworkPush;
+// - overlay lines and overlay triangles: vertex binding 0 = vec2 position + vec4 premultiplied colour
+//   (24 bytes), push constants {vec4 view}.
+// All blend premultiplied colour over the target (ONE, ONE_MINUS_SRC_ALPHA), without culling or
+// depth, with dynamic viewport and scissor.
+#pragma once
+
+#include "gpu/vulkan_object.h"
+
+#include <array>
+
+namespace ib::vk {
+
+// Matches the push_constant block in shaders/artwork_push.glsl (std430, 104 bytes).
+struct ArtworkPush {
+  float view[4];     // clip = position * view.xy + view.zw
+  float tint[4];     // multiplies the premultiplied colour
+  float weights[8];  // active keys' weights
+  int layers[8];     // active keys' texture layers (= key indices)
+  int activeCount;   // 0..8
+  int keyCount;      // m
+};
+static_assert(sizeof(ArtworkPush) == 104, "ArtworkPush must match shaders/artwork_push.glsl");
+
+struct ArtworkVertex {
+  float position[2];  // drawing pixels
+  float seamClosure;  // 0..1, see render::weldSeams
+};
+
+struct OverlayVertex {
+  float position[2];  // drawing pixels
+  float colour[4];    // premultiplied RGBA
+};
+
+struct RendererPipelines {
+  DescriptorSetLayoutObject setLayout;
+  PipelineLayoutObject artworkLayout;
+  PipelineLayoutObject overlayLayout;
+  std::array<PipelineObject, 3> artwork;  // for up to 2, 4 and 8 active keys
+  PipelineObject overlayLines;
+  PipelineObject overlayTriangles;
+};
+
+// Index into RendererPipelines::artwork of the cheapest variant that draws `activeKeys` keys (1..8).
+int artworkVariant(int activeKeys);
+
+RendererPipelines createRendererPipelines(VkDevice device, VkRenderPass pass, VkSampleCountFlagBits samples);
+
+}  // namespace ib::vk

@@ -1,0 +1,129 @@
+#include "animation/frame_stream.h"
+
+#include "core/error.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+namespace ib {
+
+namespace {
+
+const Multimesh& matching(const Multimesh& mesh, const Timeline& timeline) {
+  if (timeline.keyCount() != mesh.keyCount())
+    throw InputError("timeline: has weights for " + std::to_string(timeline.keyCount()) + " keys, the multimesh has " +
+                     std::to_string(mesh.keyCount()));
+  return mesh;
+}
+
+}  // namespace
+
+FrameStream::FrameStream(const Multimesh& mesh, const Timeline& timeline, const InterpolationParams& params,
+                         const SolverOptions& options, const DynamicsParams& dynamics)
+    : timeline_(timeline), dynamics_(dynamics), plain_(matching(mesh, timeline), params, options) {
+  validateDynamics(dynamics, "dynamics: ");
+  if (dynamics.enabled()) {
+    dynamic_.emplace(mesh, params, options);
+    mass_ = lumpedMasses(mesh);
+    anchor_ = anchorWeights(mesh);
+  }
+}
+
+void FrameStream::restart() {
+  next_ = 0;
+  shown_ = 0;
+  lastDeviation_ = 0;
+  predictor_.clear();
+  plain_.forgetHistory();
+  if (dynamic_) dynamic_->forgetHistory();
+}
+
+AnimationFrame FrameStream::next() {
+  if (done()) throw std::out_of_range("frame stream: all " + std::to_string(frameCount()) + " frames were taken");
+  AnimationFrame frame = solveFrame(next_, timeline_.frameTime(next_), true);
+  ++next_;
+  return frame;
+}
+
+AnimationFrame FrameStream::frameAt(double time) {
+  if (!std::isfinite(time)) throw InputError("frame time: must be a finite number of seconds");
+  if (!dynamics_.enabled()) {
+    const int index = static_cast<int>(std::floor((time - timeline_.start()) * timeline_.fps() + 1e-9));
+    return solveFrame(index, time, false);
+  }
+  const double frames = std::floor((time - timeline_.start()) * timeline_.fps() + 1e-9);
+  const int index = static_cast<int>(std::clamp(frames, 0.0, static_cast<double>(frameCount() - 1)));
+  restart();
+  AnimationFrame frame;
+  while (next_ <= index) frame = next();
+  return frame;
+}
+
+AnimationFrame FrameStream::solveFrame(int index, double time, bool warm) {
+  const auto started = std::chrono::steady_clock::now();
+  AnimationFrame frame;
+  frame.index = index;
+  frame.time = time;
+  frame.weights = timeline_.weights(time);
+  const std::optional<Eigen::MatrixX2d> start = warm ? predictor_.predict(frame.weights) : std::nullopt;
+  const InterpolationResult plain = plain_.solve(frame.weights, start ? &*start : nullptr);
+  frame.plain = plain.x;
+  frame.x = plain.x;
+  frame.activePairs = plain.activePairs;
+  frame.iterations = plain.iterations;
+  frame.converged = plain.converged;
+  if (warm) {
+    predictor_.remember(frame.weights, plain.x);
+    if (dynamic_) addDynamics(frame);
+    beforeLast_ = std::move(last_);
+    last_ = frame.x;
+    shown_ = std::min(shown_ + 1, 2);
+    lastDeviation_ = frame.deviation;
+  }
+  frame.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
+  return frame;
+}
+
+// Eqs. 17-19 with the anchor, as one set of vertex springs: the minimizer of W_T + W_A alone is,
+// per vertex, the spring target y_v = (c_T x_p + c_A xbar) / (c_T + c_A).
+void FrameStream::addDynamics(AnimationFrame& frame) {
+  const Timeline::Position position = timeline_.locate(frame.time);
+  const int segments = static_cast<int>(timeline_.segments().size());
+  frame.blend = shown_ == 0 ? 0.0 : dynamicsBlend(dynamics_, position, segments, lastDeviation_);
+  if (frame.blend == 0) return;
+  const double h = 1 / timeline_.fps();
+  const double size = shapeSize();
+  const int n = static_cast<int>(mass_.size());
+  const Eigen::MatrixX2d velocity = shown_ >= 2 ? Eigen::MatrixX2d((last_ - beforeLast_) / h) : Eigen::MatrixX2d::Zero(n, 2);
+  const Eigen::RowVector2d acceleration = externalAcceleration(dynamics_, frame.time).transpose() * size;
+  Eigen::MatrixX2d predicted = last_ + h * std::exp(-dynamics_.mu * h) * velocity;  // x_p, eq. 17
+  predicted.rowwise() += h * h * acceleration;
+  // k_A per unit mass: a vertex of mean mass 1/n is anchored with `anchor` times the stiffness scale.
+  const double anchorPerMass = dynamics_.anchor * dynamic_->stiffnessScale() * n;
+  const double inertiaPerMass = anchorPerMass * frame.blend / (1 - frame.blend);  // xi / h^2
+  frame.xi = inertiaPerMass * h * h;
+  VertexSprings springs;
+  springs.stiffness.resize(n);
+  springs.target.resize(n, 2);
+  for (int v = 0; v < n; ++v) {
+    const double inertia = inertiaPerMass * mass_(v), anchor = anchorPerMass * anchor_(v) * mass_(v);
+    springs.stiffness(v) = inertia + anchor;
+    springs.target.row(v) = (inertia * predicted.row(v) + anchor * frame.plain.row(v)) / (inertia + anchor);
+  }
+  const InterpolationResult result = dynamic_->solve(frame.weights, &springs.target, &springs);
+  frame.x = result.x;
+  frame.activePairs = result.activePairs;
+  frame.iterations += result.iterations;
+  frame.converged = frame.converged && result.converged;
+  frame.deviation = deviation(frame.x, frame.plain);
+}
+
+double FrameStream::deviation(const Eigen::MatrixX2d& x, const Eigen::MatrixX2d& plain) const {
+  double sum = 0;
+  for (Eigen::Index v = 0; v < x.rows(); ++v) sum += mass_(v) * (x.row(v) - plain.row(v)).squaredNorm();
+  return std::sqrt(sum) / shapeSize();
+}
+
+}  // namespace ib

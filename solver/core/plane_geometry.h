@@ -1,0 +1,69 @@
+// Small exact-enough predicates on points, segments and loops in the drawing plane (pixels).
+#pragma once
+
+#include "meshing/tracing.h"
+
+#include <Eigen/Core>
+#include <initializer_list>
+#include <string>
+
+namespace ib {
+
+// "(x, y)" with one decimal, for messages about places in a drawing.
+std::string formatPoint(const Eigen::Vector2d& p);
+
+// Twice the signed area of (a, b, c): positive when c lies to the left of a->b (y-up frame).
+double orient(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c);
+
+// Parameter t in [0, 1] of the point of segment [a, b] closest to p.
+double closestParameter(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& p);
+
+// True when closed segments [a, b] and [c, d] share a point (crossing or touching).
+bool segmentsMeet(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c,
+                  const Eigen::Vector2d& d);
+
+// A point where segments [a, b] and [c, d] meet (the midpoint of the overlap when collinear).
+Eigen::Vector2d meetingPoint(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c,
+                             const Eigen::Vector2d& d);
+
+// Crossings of a ray from p towards +x with the loop: odd means p is enclosed by the loop.
+int rayCrossings(const Polyline& loop, const Eigen::Vector2d& p);
+
+// Arc-length parametrization of a closed loop: s in [0, length()) walks the loop from point 0.
+class ArcLengthLoop {
+ public:
+  ArcLengthLoop() = default;
+  explicit ArcLengthLoop(Polyline points);
+
+  double length() const { return cumulative_.back(); }
+  const Polyline& points() const { return points_; }
+  double parameterOfPoint(int i) const { return cumulative_[i]; }
+  // The point at arc length s, s taken modulo length().
+  Eigen::Vector2d at(double s) const;
+  // Largest distance from the loop between arc lengths s0 <= s1 (walking forwards, modulo
+  // length()) to the chord from at(s0) to at(s1): how far the chord cuts across corners.
+  double chordDeviation(double s0, double s1) const { return chordDeviation({s0, s1}); }
+  // The same for a path of chords at(s0) -> at(s1) -> ... with s0 <= s1 <= ...: the largest
+  // distance of the loop between consecutive ends from their chord (a chord whose ends are not
+  // increasing counts 0). One lookup for the whole path; the ends after it are found by walking.
+  double chordDeviation(std::initializer_list<double> ends) const;
+
+ private:
+  // The segment holding arc length s in [0, length()]: the largest i < points with
+  // cumulative_[i] <= s (what a binary search over cumulative_ gives), found from its bucket.
+  size_t segmentAt(double s) const;
+  // Arc length s taken into [0, length()).
+  double wrap(double s) const;
+  // The point at arc length `local` in [0, length()] on segment i (cumulative_[i] <= local).
+  Eigen::Vector2d pointIn(size_t i, double local) const;
+
+  Polyline points_;
+  std::vector<double> cumulative_;  // size points + 1; cumulative_[i] = arc length to point i
+  // Lookup buckets of equal arc length (four per point: outlines crowd their points at curves): bucket_[b] is segmentAt(b * bucketLength_),
+  // so a lookup starts at most a few segments before its answer instead of bisecting (Comesh
+  // asks for millions of outline points).
+  std::vector<int> bucket_;
+  double bucketLength_ = 0, inverseBucketLength_ = 0;
+};
+
+}  // namespace ib

@@ -1,0 +1,57 @@
+// W_C, the clamped cohesive energy of eqs. (10)-(13), summed over keys with their weights:
+//   W_C(C_i, x) = sum_j min( l_ij / 3 * d(C_i^j, x), tau ),
+//   d = lambda [u; v]^T [[P, P/2], [P/2, P]] [u; v],   u = x^a - x^c,  v = x^b - x^d,
+//   P = alpha Id + (1 - 2 alpha) xhat xhat^T,          xhat ~ x^a + x^c - x^b - x^d.
+// P is evaluated from the current x in the local step and kept out of the global matrix (which
+// holds an isotropic spring that majorizes it). The gradient is the exact one, including the
+// dependence of xhat on x: with xhat frozen (as the paper's iteration treats it) the gradient
+// is not rotation invariant and carries a net torque, so a rotation-gauged solve could not
+// drive it to zero. A pair is *active* while l/3 d < tau; a clamped pair costs tau and exerts
+// no force.
+#pragma once
+
+#include "interpolation/deformation_energy.h"
+#include "multimesh/multimesh.h"
+
+#include <Eigen/Core>
+#include <vector>
+
+namespace ib {
+
+// Cohesive parameters in normalized units (lengths divided by the shape size).
+struct CohesiveParams {
+  double lambda = 4000.0;  // cohesive stiffness lambda (eq. 10); paper default 4e3
+  double tau = 1e-3;       // clamp threshold tau (eq. 11), energy per pair; infinity never separates
+  double alpha = 0.5;      // shear/stretch control alpha in [0, 1] (eq. 13): the jump along the
+                           // edge costs (1 - alpha), across it alpha; larger alpha = easier shear
+};
+
+struct CohesiveTerm {
+  int key = 0;
+  CohesivePair pair;
+  double restLength = 0;           // l_ij, eq. (12)
+  Eigen::Vector2d restDirection;   // fallback xhat when the deformed edges collapse
+};
+
+class CohesiveEnergy {
+ public:
+  // keys: X_i (n x 2 each, normalized units).
+  CohesiveEnergy(const Multimesh& mesh, const std::vector<Eigen::MatrixX2d>& keys, const CohesiveParams& params);
+
+  const std::vector<CohesiveTerm>& terms() const { return terms_; }
+
+  // Returns sum_i w_i W_C(C_i, x), adds its gradient to gradient (n x 2) and sets
+  // active[j] for every term j (false for terms of keys with zero weight).
+  double evaluate(const Eigen::MatrixX2d& x, const Eigen::VectorXd& w, Eigen::MatrixX2d& gradient,
+                  std::vector<char>& active) const;
+
+  // Isotropic spring constant standing in for term j in a matrix shared by x and y:
+  // l/3 lambda max(alpha, 1 - alpha), the largest eigenvalue of its P, so the spring majorizes it.
+  double springConstant(int term) const;
+
+ private:
+  CohesiveParams params_;
+  std::vector<CohesiveTerm> terms_;
+};
+
+}  // namespace ib

@@ -1,0 +1,112 @@
+#include "interpolation/global_matrix.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <utility>
+
+namespace ib {
+
+GlobalMatrix::GlobalMatrix(GlobalMatrixSources sources, int vertices, std::vector<int> partStart, int threads)
+    : sources_(sources), vertices_(vertices), assembly_(vertices), factor_(threads) {
+  factor_.setPreordered(std::move(partStart));
+}
+
+const Eigen::SparseMatrix<double>& GlobalMatrix::assemble(const GlobalMatrixFrame& frame) {
+  const DeformationEnergy& deformation = *sources_.deformation;
+  const CohesiveEnergy& cohesive = *sources_.cohesive;
+  const auto& triangles = deformation.triangles();
+  const ActiveKeys keys = activeKeys(frame.w);
+  assembly_.begin();
+  Eigen::Matrix<double, 2, 3> E;  // edge vectors of a triangle from its corners
+  E << -1, 1, 0, -1, 0, 1;
+  for (size_t t = 0; t < triangles.size(); ++t) {
+    const Eigen::Matrix3d K = E.transpose() * deformation.metric(static_cast<int>(t), keys) * E;
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c) assembly_.add(triangles[t][r], triangles[t][c], K(r, c));
+  }
+  const auto& terms = cohesive.terms();
+  for (size_t j = 0; j < terms.size(); ++j) {
+    const CohesivePair& p = terms[j].pair;
+    // k S [[2,1],[1,2]] S^T with S = [e_a - e_c, e_b - e_d]; zeros keep the pattern when clamped.
+    const bool on = j < frame.active.size() && frame.active[j];
+    const double k = on ? frame.w(terms[j].key) * cohesive.springConstant(static_cast<int>(j)) : 0.0;
+    const int vert[4] = {p.a, p.c, p.b, p.d};
+    const double sign[4] = {1, -1, 1, -1};
+    for (int r = 0; r < 4; ++r)
+      for (int c = 0; c < 4; ++c) {
+        const double block = (r / 2 == c / 2) ? 2.0 : 1.0;
+        assembly_.add(vert[r], vert[c], k * block * sign[r] * sign[c]);
+      }
+  }
+  for (int v = 0; v < vertices_; ++v)
+    assembly_.add(v, v, sources_.tie + (frame.springs.size() ? frame.springs(v) : 0.0));
+  if (sources_.nonOverlap)
+    for (int v : sources_.nonOverlap->allBoundaryVertices()) assembly_.add(v, v, sources_.nonOverlap->stiffness());
+  return assembly_.matrix();
+}
+
+long GlobalMatrix::updateCost(const std::vector<char>& active) const {
+  if (!valid_ || active.size() != active_.size()) throw std::logic_error("global matrix: no factor to update");
+  const auto& terms = sources_.cohesive->terms();
+  long cost = 0;
+  for (size_t j = 0; j < active.size(); ++j)
+    if (active[j] != active_[j] && weights_(terms[j].key) != 0) {
+      const CohesivePair& p = terms[j].pair;
+      cost += 2 * factor_.updateCost(std::min(std::min(p.a, p.b), std::min(p.c, p.d)));
+    }
+  return cost;
+}
+
+bool GlobalMatrix::updateActive(const std::vector<char>& active) {
+  if (!valid_ || active.size() != active_.size()) throw std::logic_error("global matrix: no factor to update");
+  const CohesiveEnergy& cohesive = *sources_.cohesive;
+  const auto& terms = cohesive.terms();
+  // k S [[2,1],[1,2]] S^T = 3k/2 v1 v1^T + k/2 v2 v2^T with v1 = S (1, 1), v2 = S (1, -1). Springs
+  // that engage go first, so every intermediate H is positive definite.
+  for (int pass = 0; pass < 2; ++pass)
+    for (size_t j = 0; j < active.size(); ++j) {
+      const bool engages = active[j] && !active_[j];
+      if (active[j] == active_[j] || engages != (pass == 0) || weights_(terms[j].key) == 0) continue;
+      const CohesivePair& p = terms[j].pair;
+      const double k = weights_(terms[j].key) * cohesive.springConstant(static_cast<int>(j));
+      const double sigma = engages ? 1.0 : -1.0;
+      const double a1 = std::sqrt(1.5 * k), a2 = std::sqrt(0.5 * k);
+      try {
+        factor_.rankOneUpdate({p.a, p.c, p.b, p.d}, {a1, -a1, a1, -a1}, sigma);
+        factor_.rankOneUpdate({p.a, p.c, p.b, p.d}, {a2, -a2, -a2, a2}, sigma);
+      } catch (const std::runtime_error&) {
+        // A downdate lost definiteness to rounding; the factor is spoilt, so build it afresh.
+        factorize({weights_, springs_, active});
+        return false;
+      }
+    }
+  active_ = active;
+  return true;
+}
+
+void GlobalMatrix::factorize(const GlobalMatrixFrame& frame) {
+  valid_ = false;  // stays false if the factorization throws
+  factor_.factorize(assemble(frame));
+  weights_ = frame.w;
+  springs_ = frame.springs;
+  active_ = frame.active;
+  valid_ = true;
+}
+
+// None on both sides, or every c_v within a fifth of H's (plus a small absolute slack, so springs
+// fading to zero do not refactorize every frame).
+bool GlobalMatrix::springsMatch(const Eigen::VectorXd& springs) const {
+  if (springs.size() == 0 || springs_.size() == 0) return springs.size() == springs_.size();
+  const double slack = 0.02 * sources_.stiffnessScale;
+  for (Eigen::Index v = 0; v < springs.size(); ++v)
+    if (std::abs(springs(v) - springs_(v)) > 0.1 * (springs(v) + springs_(v)) + slack) return false;
+  return true;
+}
+
+bool GlobalMatrix::models(const GlobalMatrixFrame& frame, double refactorDistance) const {
+  return valid_ && (frame.w - weights_).lpNorm<1>() <= refactorDistance &&
+         (refactorDistance > 0 || frame.w == weights_) && frame.active == active_ && springsMatch(frame.springs);
+}
+
+}  // namespace ib

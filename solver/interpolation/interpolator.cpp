@@ -1,0 +1,372 @@
+#include "interpolation/interpolator.h"
+
+#include "core/error.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <omp.h>
+#include <stdexcept>
+
+namespace ib {
+
+namespace {
+
+std::vector<std::pair<int, int>> meshEdges(const Multimesh& mesh) {
+  std::vector<std::pair<int, int>> edges;
+  for (auto e : mesh.topology().edges()) edges.push_back({e.v0().idx(), e.v1().idx()});
+  return edges;
+}
+
+const Multimesh& validated(const Multimesh& mesh) {
+  mesh.validate();
+  return mesh;
+}
+
+void require(bool ok, const std::string& field, const std::string& rule) {
+  if (!ok) throw InputError("solver option " + field + ": " + rule);
+}
+
+const SolverOptions& validOptions(const InterpolationParams& p, const SolverOptions& o) {
+  const CohesiveParams& c = p.cohesive;
+  require(std::isfinite(c.lambda) && c.lambda >= 0, "lambda", "must be a finite number >= 0");
+  require(c.tau > 0 && !std::isnan(c.tau), "tau", "must be > 0 (infinity: pairs never separate)");
+  require(c.alpha >= 0 && c.alpha <= 1, "alpha", "must be in [0, 1]");
+  require(o.relativeTolerance > 0 && o.relativeTolerance < 1, "relativeTolerance", "must be in (0, 1)");
+  require(o.maxIterations >= 1, "maxIterations", "must be >= 1");
+  require(o.andersonDepth >= 0 && o.andersonDepth <= AndersonAcceleration::kMaxDepth, "andersonDepth",
+          "must be in [0, " + std::to_string(AndersonAcceleration::kMaxDepth) + "]");
+  require(o.refactorDistance >= 0 && std::isfinite(o.refactorDistance), "refactorDistance", "must be >= 0");
+  require(o.staleActiveIterations >= 1, "staleActiveIterations", "must be >= 1");
+  require(o.placementStiffness > 0 && std::isfinite(o.placementStiffness), "placementStiffness", "must be > 0");
+  require(o.nonOverlapStiffness > 0 && std::isfinite(o.nonOverlapStiffness), "nonOverlapStiffness", "must be > 0");
+  require(o.threads >= 0, "threads", "must be >= 0 (0 = all cores)");
+  return o;
+}
+
+// E_S = 1/2 sum_v c_v |x_v - y_v|^2, its gradient added to g. Summed serially: bit-identical
+// results for any thread count.
+double springEnergyOf(const Eigen::VectorXd& c, const Eigen::MatrixX2d& target, const Eigen::MatrixX2d& x,
+                      Eigen::MatrixX2d& g) {
+  double energy = 0;
+  for (Eigen::Index v = 0; v < x.rows(); ++v) {
+    const double dx = x(v, 0) - target(v, 0), dy = x(v, 1) - target(v, 1);
+    energy += c(v) * (dx * dx + dy * dy);
+    g(v, 0) += c(v) * dx;
+    g(v, 1) += c(v) * dy;
+  }
+  return 0.5 * energy;
+}
+
+Eigen::Map<const Eigen::VectorXd> flat(const Eigen::MatrixX2d& x) { return {x.data(), x.size()}; }
+Eigen::Map<Eigen::VectorXd> flatMutable(Eigen::MatrixX2d& x) { return {x.data(), x.size()}; }
+
+// Threads for a mesh of n vertices: below a few thousand vertices a thread's share of an
+// iteration is shorter than the cost of waking it, so small meshes run on one.
+int threadsFor(int requested, int vertices) {
+  if (vertices < 4000) return 1;
+  return requested > 0 ? requested : omp_get_max_threads();
+}
+
+}  // namespace
+
+void validateWeights(const Eigen::VectorXd& w, int keyCount) {
+  if (w.size() != keyCount)
+    throw InputError("weights: expected " + std::to_string(keyCount) + " values (one per key), got " +
+                     std::to_string(w.size()));
+  for (int i = 0; i < w.size(); ++i) {
+    if (!std::isfinite(w(i))) throw InputError("weights: w[" + std::to_string(i) + "] is not a finite number");
+    if (w(i) < 0) throw InputError("weights: w[" + std::to_string(i) + "] = " + std::to_string(w(i)) + " is negative");
+  }
+  if (std::abs(w.sum() - 1.0) > 1e-6)
+    throw InputError("weights: sum to " + std::to_string(w.sum()) + ", must sum to 1");
+}
+
+double Interpolator::gradientNorm(const Eigen::MatrixX2d& g) const {
+  const int blocks = vertexSplit_.threads();
+  std::vector<double> partial(static_cast<size_t>(blocks), 0.0);
+  const double* gx = g.col(0).data();
+  const double* gy = g.col(1).data();
+#pragma omp parallel num_threads(blocks)
+  for (int p = omp_get_thread_num(); p < blocks; p += omp_get_num_threads()) {
+    double largest = 0;
+#pragma omp simd reduction(max : largest)
+    for (int v = vertexSplit_.begin(p); v < vertexSplit_.end(p); ++v)
+      largest = std::max(largest, std::max(std::abs(gx[v]), std::abs(gy[v])));
+    partial[p] = largest;
+  }
+  return *std::max_element(partial.begin(), partial.end());
+}
+
+struct Interpolator::Frame {
+  Eigen::VectorXd w;
+  Eigen::VectorXd springs;         // c_v (empty: no springs)
+  Eigen::MatrixX2d springTarget;   // y_v, normalized
+  ActiveKeys keys;
+  Eigen::MatrixX2d blend;         // Xbar(w) = sum_i w_i X_i, normalized
+  std::vector<int> participants;  // W_O boundary vertices
+};
+
+struct Interpolator::State {
+  Eigen::MatrixX2d x, gradient;
+  double energy = 0;                          // W_I + E_P
+  double placement = 0;                       // E_P alone
+  std::vector<char> active;                   // cohesive terms not clamped
+  std::vector<std::pair<int, int>> contacts;  // W_O offenders
+};
+
+Interpolator::Interpolator(const Multimesh& mesh, const InterpolationParams& params, const SolverOptions& options)
+    : Interpolator(threadLayout(validated(mesh), threadsFor(validOptions(params, options).threads, mesh.vertexCount())),
+                   params, options) {}
+
+Interpolator::Interpolator(ThreadLayout layout, const InterpolationParams& params, const SolverOptions& options)
+    : params_(params),
+      options_(options),
+      originalOf_(std::move(layout.originalOf)),
+      vertexSplit_(std::move(layout.vertices)),
+      triangleSplit_(std::move(layout.triangleSplit)),
+      groups_(layout.mesh.vertexCount(), meshEdges(layout.mesh)),
+      anderson_(options.andersonDepth, vertexSplit_.threads()) {
+  const Multimesh& mesh = layout.mesh;
+  anderson_.setRowSplit(vertexSplit_, 2);  // the x and y columns of an n x 2 matrix
+  const std::vector<Triangle>& triangles = layout.triangles;
+  double meanArea = 0;
+  for (int i = 0; i < mesh.keyCount(); ++i) {
+    keys_.push_back(mesh.keyPositions(i));
+    for (const Triangle& t : triangles)
+      meanArea += signedArea(keys_[i].row(t[0]), keys_[i].row(t[1]), keys_[i].row(t[2])) / mesh.keyCount();
+  }
+  scale_ = std::sqrt(meanArea);
+  for (auto& X : keys_) X /= scale_;
+  deformation_ = std::make_unique<DeformationEnergy>(triangles, keys_, layout.kappa);
+  // The same weight for every vertex (the normalized area, 1, shared out): it must not change
+  // from frame to frame, or the rigid part of the carried Anderson history goes stale (measured:
+  // about 15% more iterations with area weights blended by w), and it must not depend on keys
+  // with zero weight.
+  vertexWeight_ = 1.0 / mesh.vertexCount();
+  cohesive_ = std::make_unique<CohesiveEnergy>(mesh, keys_, params.cohesive);
+
+  // Mean diagonal of the ARAP matrix at uniform weights: the stiffness scale of one vertex.
+  const Eigen::VectorXd uniform = Eigen::VectorXd::Constant(keyCount(), 1.0 / keyCount());
+  const ActiveKeys all = activeKeys(uniform);
+  double diagonal = 0;
+  for (int t = 0; t < deformation_->triangleCount(); ++t)
+    diagonal += deformation_->metric(t, all).sum();  // sum of E^T M E's diagonal = sum of M's entries
+  diagonal /= vertexCount();
+  stiffnessScale_ = diagonal;
+  gradientFloor_ = 1e-13 * diagonal;
+  nonOverlap_ = std::make_unique<NonOverlap>(mesh, options.nonOverlapStiffness * diagonal);
+  const GlobalMatrixSources sources{deformation_.get(), cohesive_.get(), params.nonOverlap ? nonOverlap_.get() : nullptr,
+                                    options.placementStiffness * vertexWeight_, stiffnessScale_};
+  global_ = std::make_unique<GlobalMatrix>(sources, mesh.vertexCount(), std::move(layout.partStart), vertexSplit_.threads());
+}
+
+Interpolator::Frame Interpolator::makeFrame(const Eigen::VectorXd& w, const VertexSprings* springs) const {
+  validateWeights(w, keyCount());
+  Frame f;
+  f.w = w;
+  if (springs) {
+    const int n = vertexCount();
+    if (springs->stiffness.size() != n || springs->target.rows() != n)
+      throw InputError("vertex springs: expected " + std::to_string(n) + " stiffnesses and targets");
+    if (!springs->target.allFinite() || !springs->stiffness.allFinite() || springs->stiffness.minCoeff() < 0)
+      throw InputError("vertex springs: stiffnesses must be finite and >= 0, targets finite");
+    if (springs->stiffness.maxCoeff() > 0) {
+      f.springs.resize(n);
+      for (int k = 0; k < n; ++k) f.springs(k) = springs->stiffness(originalOf_[k]);
+      f.springTarget = toLayout(springs->target, originalOf_) / scale_;
+    }
+  }
+  f.keys = activeKeys(w);
+  f.blend = Eigen::MatrixX2d::Zero(vertexCount(), 2);
+  for (size_t a = 0; a < f.keys.index.size(); ++a) f.blend += f.keys.weight[a] * keys_[f.keys.index[a]];
+  f.participants = nonOverlap_->participants(f.keys);
+  return f;
+}
+
+void Interpolator::evaluateState(const Frame& frame, State& s) const {
+  const int n = vertexCount();
+  s.gradient.resize(n, 2);
+  // E_P first: it also initializes the gradient. Each thread sums its own vertices; the sums
+  // are added in block order (an OpenMP reduction would add them in arrival order, and frames
+  // must be bit-identical from run to run).
+  const double tie = options_.placementStiffness * vertexWeight_;  // mu m_v
+  const double *x = s.x.col(0).data(), *y = s.x.col(1).data();
+  const double *bx = frame.blend.col(0).data(), *by = frame.blend.col(1).data();
+  double *gx = s.gradient.col(0).data(), *gy = s.gradient.col(1).data();
+  const int blocks = vertexSplit_.threads();
+  std::vector<double> partial(static_cast<size_t>(blocks), 0.0);
+#pragma omp parallel num_threads(blocks)
+  for (int p = omp_get_thread_num(); p < blocks; p += omp_get_num_threads()) {
+    double sum = 0;
+#pragma omp simd reduction(+ : sum)
+    for (int v = vertexSplit_.begin(p); v < vertexSplit_.end(p); ++v) {
+      const double dx = x[v] - bx[v], dy = y[v] - by[v];
+      sum += dx * dx + dy * dy;
+      gx[v] = tie * dx;
+      gy[v] = tie * dy;
+    }
+    partial[p] = sum;
+  }
+  double placement = 0;
+  for (double part : partial) placement += part;
+  s.placement = 0.5 * tie * placement;
+  s.energy = s.placement;
+  if (frame.springs.size()) s.energy += springEnergyOf(frame.springs, frame.springTarget, s.x, s.gradient);
+  s.energy += deformation_->evaluate(s.x, frame.keys, s.gradient, vertexSplit_, triangleSplit_);
+  s.energy += cohesive_->evaluate(s.x, frame.w, s.gradient, s.active);
+  s.contacts.clear();
+  if (params_.nonOverlap) s.energy += nonOverlap_->evaluate(s.x, frame.participants, s.gradient, s.contacts);
+}
+
+void Interpolator::evaluateLinks(const Frame& frame, State& s) const {
+  Eigen::MatrixX2d scratch = Eigen::MatrixX2d::Zero(vertexCount(), 2);
+  cohesive_->evaluate(s.x, frame.w, scratch, s.active);
+  s.contacts.clear();
+  if (params_.nonOverlap) nonOverlap_->evaluate(s.x, frame.participants, scratch, s.contacts);
+}
+
+void Interpolator::align(const Frame& frame, const State& reference, Eigen::MatrixX2d& x) {
+  std::vector<std::pair<int, int>> links = reference.contacts;
+  const auto& terms = cohesive_->terms();
+  for (size_t j = 0; j < terms.size(); ++j)
+    if (j < reference.active.size() && reference.active[j]) {
+      links.push_back({terms[j].pair.a, terms[j].pair.c});
+      links.push_back({terms[j].pair.b, terms[j].pair.d});
+    }
+  if (links != groupLinks_) {
+    groups_.update(links);
+    groupLinks_ = std::move(links);
+  }
+  alignGroups(x, frame.blend, groups_, vertexSplit_);
+}
+
+void Interpolator::forgetHistory() {
+  anderson_.reset();
+  global_->invalidate();
+}
+
+EnergyEvaluation Interpolator::evaluate(const Eigen::MatrixX2d& x, const Eigen::VectorXd& w) const {
+  if (x.rows() != vertexCount()) throw InputError("positions: expected " + std::to_string(vertexCount()) + " rows");
+  const Frame frame = makeFrame(w, nullptr);
+  State s;
+  s.x = toLayout(x, originalOf_) / scale_;
+  evaluateState(frame, s);
+  return {s.energy, fromLayout(s.gradient, originalOf_) / scale_};
+}
+
+int Interpolator::countOverlaps(const Eigen::MatrixX2d& x, const Eigen::VectorXd& w) const {
+  if (x.rows() != vertexCount()) throw InputError("positions: expected " + std::to_string(vertexCount()) + " rows");
+  return nonOverlap_->countInside(toLayout(x, originalOf_) / scale_, makeFrame(w, nullptr).participants);
+}
+
+Interpolator::Step Interpolator::step(const Frame& frame, const State& s, State& candidate, Eigen::MatrixX2d& plain,
+                                      InterpolationResult& result) {
+  const double slack = 1e-12 * std::abs(result.startEnergy);  // rounding noise in E
+  const auto tryCandidate = [&]() {
+    evaluateState(frame, candidate);
+    ++result.evaluations;
+    return candidate.energy <= s.energy + slack;
+  };
+  // The plain local-global step G(x) = x - H^{-1} g, placed rigidly.
+  global_->factor().step(s.x, s.gradient, plain);
+  if (!frame.springs.size()) align(frame, s, plain);
+  candidate.x.resize(vertexCount(), 2);
+  anderson_.next(flat(plain), flat(s.gradient), flatMutable(candidate.x));
+  if (tryCandidate()) return Step::kAccepted;
+  if (options_.andersonDepth > 0) {
+    anderson_.reset();
+    candidate.x = plain;
+    if (tryCandidate()) return Step::kAccepted;
+  }
+  if (s.active != global_->active()) {
+    // Cohesive pairs engaged or let go since H was built: H no longer models the energy.
+    refactorize(frame.w, frame.springs, s.active, result);
+    anderson_.reset();
+    return Step::kRefactorized;
+  }
+  for (double beta = 0.5; beta > 1e-3; beta *= 0.5) {
+    candidate.x = s.x + beta * (plain - s.x);
+    if (tryCandidate()) return Step::kAccepted;
+  }
+  return Step::kStalled;
+}
+
+InterpolationResult Interpolator::solve(const Eigen::VectorXd& w, const Eigen::MatrixX2d* warmStart,
+                                        const VertexSprings* springs) {
+  const auto started = std::chrono::steady_clock::now();
+  const Frame frame = makeFrame(w, springs);
+  State s;
+  if (warmStart) {
+    if (warmStart->rows() != vertexCount() || !warmStart->allFinite())
+      throw InputError("warm start: expected " + std::to_string(vertexCount()) + " finite positions");
+    s.x = toLayout(*warmStart, originalOf_) / scale_;
+  } else {
+    s.x = frame.blend;
+  }
+  // Place the start rigidly with the groups its own links define (springs hold the rigid motions
+  // themselves), then evaluate.
+  if (!frame.springs.size()) {
+    evaluateLinks(frame, s);
+    align(frame, s, s.x);
+  }
+  evaluateState(frame, s);
+
+  InterpolationResult result;
+  result.evaluations = 1;
+  ensureFactorization(frame.w, frame.springs, s.active, result);
+  result.startEnergy = s.energy;
+  result.energyHistory.push_back(s.energy);
+  const double startNorm = gradientNorm(s.gradient);
+  // The fixed-point map of this frame is close to the last one's (it moves continuously with w,
+  // also where a weight reaches or leaves zero), so the secant history seeds this frame. A
+  // refactorized H changes the map more, but measurably less than dropping the history costs;
+  // the safeguard rejects any step the stale history gets wrong.
+  anderson_.restart();
+  // Converged when the gradient fell by the relative tolerance, or reached the absolute floor
+  // where it is rounding noise (a start that is already a minimizer).
+  const double target = std::max(options_.relativeTolerance * startNorm, gradientFloor_);
+  double norm = startNorm;
+  const auto relative = [&](double value) { return startNorm > 0 ? value / startNorm : 0.0; };
+  result.residualHistory.push_back(relative(norm));
+
+  State candidate;
+  Eigen::MatrixX2d plain;
+  int staleIterations = 0;  // accepted iterations in a row whose active cohesive set H does not model
+  while (norm > target && result.iterations < options_.maxIterations) {
+    const Step outcome = step(frame, s, candidate, plain, result);
+    if (outcome == Step::kRefactorized) continue;
+    if (outcome == Step::kStalled) break;  // no decrease along the step: reported as not converged
+    std::swap(s, candidate);
+    // A pair that let go keeps its stiff spring in a stale H, so steps along it stay tiny while
+    // still lowering the energy, and nothing fails (measured: the frame where a cut lets go took
+    // 46-500 iterations). So H's factor follows the pairs at once where it can (followActive);
+    // where that costs more than a factorization, H is rebuilt once it has been stale for a
+    // while; at once would cost a factorization per iteration while pairs let go one after another.
+    if (s.active != global_->active() && followActive(frame.w, frame.springs, s.active, result)) anderson_.reset();
+    staleIterations = s.active == global_->active() ? 0 : staleIterations + 1;
+    if (staleIterations >= options_.staleActiveIterations) {
+      refactorize(frame.w, frame.springs, s.active, result);
+      anderson_.reset();
+      staleIterations = 0;
+    }
+    ++result.iterations;
+    result.energyHistory.push_back(s.energy);
+    norm = gradientNorm(s.gradient);
+    result.residualHistory.push_back(relative(norm));
+  }
+
+  if (params_.nonOverlap) nonOverlap_->project(s.x, frame.participants);
+  if (!s.x.allFinite()) throw std::runtime_error("interpolation produced non-finite positions");
+  result.converged = norm <= target;
+  result.relativeResidual = relative(norm);
+  result.energy = s.energy;
+  result.activePairs = s.active;
+  result.interpolationEnergy = s.energy - s.placement;
+  result.x = fromLayout(s.x, originalOf_) * scale_;
+  result.milliseconds =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
+  return result;
+}
+
+}  // namespace ib

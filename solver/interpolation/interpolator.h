@@ -1,0 +1,202 @@
+// Variational interpolation over a multimesh (eq. 9):
+//   x(w) = argmin_x sum_i w_i [ W_C(C_i, x) + W_O(B_i, x) + W_D(X_i, x) ]  (+ the weak placement tie E_P)
+// solved by an accelerated local-global method (libigl's precompute/solve split: the
+// constructor does the heavy setup once, solve() is the cheap per-frame call).
+//
+// Iteration. The local step (rotations per triangle and key, cohesive directions and clamping,
+// non-overlap targets) runs fused with the evaluation of the energy E and its gradient g. The
+// global step is x <- x - H^{-1} g with H = sum_t E^T M_t(w) E + cohesive springs + mu M, an n x n
+// matrix shared by x and y (global_matrix.h). With H the current frame's exact quadratic this is
+// the classic global solve. H is refactorized only when w has moved by more than
+// SolverOptions::refactorDistance (L1) since the last factorization. When the set of active
+// cohesive pairs changes (at the start of a frame or after an accepted iteration), H is
+// refactorized at the frame's weights if w has moved by more than half of refactorDistance;
+// otherwise its factor is brought to the new set by rank-one updates, or, where a factorization
+// costs less than those (meshes of about a hundred vertices), H is refactorized once the set has
+// differed for SolverOptions::staleActiveIterations iterations or a step fails while it
+// differs. Otherwise H serves as a fixed preconditioner:
+// the fixed point is the same stationary point (g = 0), and the anisotropic, x-dependent
+// cohesive matrix P lives in the gradient (local step), not in H. Anderson acceleration on top,
+// minimizing the gradient, its history carried from frame to frame. An accelerated iterate that
+// raises E is replaced by the plain step, and a plain step that raises E is backtracked, so a
+// solve never returns a worse energy than its start.
+//
+// Threads. Internally the vertices are numbered so that each thread owns one block of them in
+// every loop of an iteration (thread_layout.h); inputs and outputs use the multimesh's numbering.
+//
+// Units. Internally all lengths are divided by the shape size s = sqrt(mean key area), so
+// lambda, tau and energies mean the same at any drawing resolution. Inputs and outputs are in
+// the multimesh's own units.
+#pragma once
+
+#include "core/thread_block.h"
+#include "interpolation/cohesive_energy.h"
+#include "interpolation/deformation_energy.h"
+#include "interpolation/global_matrix.h"
+#include "interpolation/non_overlap.h"
+#include "interpolation/placement.h"
+#include "interpolation/thread_layout.h"
+#include "linalg/anderson.h"
+#include "multimesh/multimesh.h"
+
+#include <Eigen/Core>
+#include <Eigen/Sparse>
+#include <memory>
+#include <vector>
+
+namespace ib {
+
+struct InterpolationParams {
+  CohesiveParams cohesive;  // lambda, tau, alpha (normalized units)
+  bool nonOverlap = false;  // enforce W_O (eq. 14); off by default, as in the paper
+};
+
+struct SolverOptions {
+  double relativeTolerance = 1e-3;  // stop when |g|_inf / |g(x_start)|_inf < this (paper 7.1)
+  int maxIterations = 500;          // iteration cap; reaching it is reported as not converged
+  // Anderson history length; 0 = plain local-global. Default 16: against 10, the bench sweeps
+  // take 8.96 instead of 10.04 iterations per frame at 10k vertices (2 keys) and 10.7 instead of
+  // 14.4 at 100k, the scenes' animations 13% fewer in all. 20 took fewer at 100k and 4 keys but
+  // more on the scenes; 32 was no better.
+  int andersonDepth = 16;
+  double refactorDistance = 1.0;    // refactorize H when |w - w_H|_1 exceeds this; 0 = exact H every frame
+  // Where updating H's factor for changed active cohesive pairs would cost more than a
+  // factorization (small meshes, or many pairs changing at once): refactorize H after this many
+  // iterations in a row in which the active pairs differ from H's (a step that fails meanwhile
+  // refactorizes at once); >= 1. Default 4. With 8 and 16, two bundled scenes jumped in
+  // mid-animation (another minimum of the nonconvex energy); with 1, 2 and 4 they did not.
+  int staleActiveIterations = 4;
+  // Follow changed active cohesive pairs by rank-one updates of H's factor where they cost less
+  // than a factorization and w is near H's (see above). false: refactorize by the rules above
+  // only (for comparison, `inbetween bench cut`). Default true.
+  bool updateFactor = true;
+  double placementStiffness = 1e-5; // mu of the placement tie E_P (see placement.h), > 0
+  double nonOverlapStiffness = 1;   // W_O penalty k, relative to the mean diagonal of the ARAP matrix
+  int threads = 0;                  // threads for the local step and solves; 0 = all cores
+                                    // (meshes under 4000 vertices always run on one)
+};
+
+struct InterpolationResult {
+  Eigen::MatrixX2d x;                 // n x 2, the inbetween in the multimesh's units
+  int iterations = 0;
+  int evaluations = 0;                // local steps (energy + gradient): the start, every candidate
+  double relativeResidual = 0;        // |g|_inf / |g(x_start)|_inf at the end (0 for a zero start gradient)
+  double energy = 0;                  // W_I + E_P at x (normalized units)
+  double startEnergy = 0;             // the same at the (aligned) start
+  double interpolationEnergy = 0;     // W_I alone at x (eq. 9), without the placement tie
+  bool converged = false;             // residual below tolerance, or |g| at rounding level; never a small step
+  int factorizations = 0;             // numeric factorizations of H during this solve
+  int factorUpdates = 0;              // rank-one updates of H's factor for changed active cohesive pairs
+  double factorMilliseconds = 0;      // wall time of both, part of milliseconds
+  double milliseconds = 0;            // wall time of this solve, factorization included
+  std::vector<double> energyHistory;    // energy after each iteration (start first)
+  std::vector<double> residualHistory;  // relative residual after each iteration (start first: 1)
+  // Per cohesive pair, in the multimesh's order (key 0's pairs C_0, then C_1, ...), at the last
+  // iterate: 1 while the pair holds (l/3 d < tau, eq. 11), 0 once it is clamped (let go) or its
+  // key has zero weight.
+  std::vector<char> activePairs;
+};
+
+// Extra per-vertex springs E_S = 1/2 sum_v c_v |x_v - y_v|^2 added to the energy of one solve:
+// the dynamics terms (W_T of eq. 18 and the anchor, see dynamics.h). They also hold the rigid
+// motions the other energies leave free, so a solve with springs does not place groups rigidly
+// on the blend; every group needs some c_v > 0.
+struct VertexSprings {
+  Eigen::VectorXd stiffness;  // n x 1, c_v >= 0 in normalized units (energy per shape size squared)
+  Eigen::MatrixX2d target;    // n x 2, y_v in the multimesh's units
+};
+
+struct EnergyEvaluation {
+  double energy = 0;          // W_I + E_P, normalized units
+  Eigen::MatrixX2d gradient;  // d energy / d x, n x 2, with x in the multimesh's units
+};
+
+class Interpolator {
+ public:
+  // Validates the multimesh and the parameters (InputError naming the field on failure).
+  Interpolator(const Multimesh& mesh, const InterpolationParams& params, const SolverOptions& options);
+
+  // Solves for weights w (m x 1, convex). warmStart (n x 2, multimesh units) is the previous
+  // frame; without it the solve starts from the linear blend sum_i w_i X_i. springs, when given,
+  // add E_S to this solve's energy (and to H, which is then refactorized whenever some c_v has
+  // moved by more than a fifth since the last factorization).
+  InterpolationResult solve(const Eigen::VectorXd& w, const Eigen::MatrixX2d* warmStart = nullptr,
+                            const VertexSprings* springs = nullptr);
+
+  // Forgets what carries over from frame to frame (the Anderson history and the factorization of
+  // H), so the next solve behaves exactly as on a fresh Interpolator: a stream restarted from its
+  // first frame repeats its frames bit for bit.
+  void forgetHistory();
+
+  // Energy and gradient at x for weights w, local-step quantities taken at x (for tests).
+  EnergyEvaluation evaluate(const Eigen::MatrixX2d& x, const Eigen::VectorXd& w) const;
+
+  // Boundary vertices of the active keys inside the deformed mesh at x (0 when W_O holds),
+  // counted whether or not W_O is enforced.
+  int countOverlaps(const Eigen::MatrixX2d& x, const Eigen::VectorXd& w) const;
+
+  double shapeSize() const { return scale_; }
+  // Mean diagonal entry of the ARAP matrix at uniform weights (normalized units): how stiff one
+  // vertex is held by its triangles. Spring constants are stated relative to it.
+  double stiffnessScale() const { return stiffnessScale_; }
+  int keyCount() const { return static_cast<int>(keys_.size()); }
+  int vertexCount() const { return static_cast<int>(keys_.front().rows()); }
+  int threads() const { return vertexSplit_.threads(); }
+  long factorNonZeros() const { return global_->factor().factorNonZeros(); }
+
+ private:
+  struct Frame;
+  struct State;
+  Interpolator(ThreadLayout layout, const InterpolationParams& params, const SolverOptions& options);
+  double gradientNorm(const Eigen::MatrixX2d& g) const;  // |g|_inf, over the vertex split
+  Frame makeFrame(const Eigen::VectorXd& w, const VertexSprings* springs) const;
+  void evaluateState(const Frame& frame, State& state) const;
+  // Only what placement groups need: active cohesive pairs and non-overlap contacts.
+  void evaluateLinks(const Frame& frame, State& state) const;
+  void align(const Frame& frame, const State& reference, Eigen::MatrixX2d& x);
+  // One safeguarded iteration from s: the Anderson candidate, else the plain step, else (if the
+  // active cohesive set changed) a refactorization to retry with, else a backtracked plain
+  // step. On kAccepted the new iterate is in candidate; plain is scratch.
+  enum class Step { kAccepted, kRefactorized, kStalled };
+  Step step(const Frame& frame, const State& s, State& candidate, Eigen::MatrixX2d& plain, InterpolationResult& result);
+  // H's factor for a frame's weights w (m x 1), vertex springs (n x 1 or empty) and active
+  // cohesive pairs (interpolator_factor.cpp); all counted and timed in result.
+  // Factorizes H, unless the factor still models the frame (ensureFactorization: only the pairs
+  // differing is followed as in followActive), or always (refactorize).
+  void ensureFactorization(const Eigen::VectorXd& w, const Eigen::VectorXd& springs, const std::vector<char>& active,
+                           InterpolationResult& result);
+  void refactorize(const Eigen::VectorXd& w, const Eigen::VectorXd& springs, const std::vector<char>& active,
+                   InterpolationResult& result);
+  // Brings the factor to changed active pairs: refactorized at w when w has moved by more than
+  // half of refactorDistance since H was built (a factor change due anyway catches up with the
+  // weights), else by rank-one updates (GlobalMatrix::updateActive) unless they would cost more
+  // than a factorization. Returns whether the factor changed.
+  bool followActive(const Eigen::VectorXd& w, const Eigen::VectorXd& springs, const std::vector<char>& active,
+                    InterpolationResult& result);
+  // The rank-one branch of followActive: false, nothing done, when too costly or turned off.
+  bool updateFactorization(const std::vector<char>& active, InterpolationResult& result);
+
+  InterpolationParams params_;
+  SolverOptions options_;
+  // Internally, vertices are numbered as threadLayout() numbers them (see thread_layout.h), and
+  // thread p works on the vertices [vertexSplit_.begin(p), vertexSplit_.end(p)) in every loop.
+  std::vector<int> originalOf_;            // internal vertex k is the caller's vertex originalOf_[k]
+  RowSplit vertexSplit_, triangleSplit_;
+  double scale_ = 1;                       // shape size s
+  std::vector<Eigen::MatrixX2d> keys_;     // X_i / s
+  double vertexWeight_ = 0;                // placement weight m_v = 1/n of every vertex (placement.h)
+  std::unique_ptr<DeformationEnergy> deformation_;
+  std::unique_ptr<CohesiveEnergy> cohesive_;
+  std::unique_ptr<NonOverlap> nonOverlap_;  // always built; used when params_.nonOverlap
+  PlacementGroups groups_;
+  std::vector<std::pair<int, int>> groupLinks_;  // the links groups_ was last built from
+  std::unique_ptr<GlobalMatrix> global_;   // H and its factor; built from the energies above
+  AndersonAcceleration anderson_;          // history kept across frames
+  double gradientFloor_ = 0;               // absolute |g|_inf below which a start is converged
+  double stiffnessScale_ = 0;              // see stiffnessScale()
+};
+
+// Checks interpolation weights: m entries, finite, non-negative, summing to 1 (within 1e-6).
+void validateWeights(const Eigen::VectorXd& w, int keyCount);
+
+}  // namespace ib

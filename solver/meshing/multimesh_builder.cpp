@@ -1,0 +1,225 @@
+#include "meshing/multimesh_builder.h"
+
+#include "core/error.h"
+#include "core/plane_geometry.h"
+#include "core/png_image.h"
+#include "meshing/shared_boundary.h"
+#include "meshing/stiffness_paint.h"
+
+#include <Eigen/SparseCholesky>
+#include <algorithm>
+#include <filesystem>
+#include <memory>
+#include <sstream>
+
+namespace ib {
+
+namespace {
+
+bool closedIn(const BoundaryArc& arc, int key) {
+  return std::find(arc.closedIn.begin(), arc.closedIn.end(), key) != arc.closedIn.end();
+}
+
+// The vertices along arc `a` from its start through its end (the next arc's first vertex).
+std::vector<int> chainWithEnd(const ReferenceMesh& mesh, int a) {
+  std::vector<int> chain = mesh.arcChains[a];
+  chain.push_back(mesh.arcEnd[a]);
+  return chain;
+}
+
+// Positions of every boundary vertex in key k; cut sides the key closes are exact copies.
+void placeBoundary(const SharedBoundary& boundary, const ReferenceMesh& mesh, int k, Eigen::MatrixX2d& x) {
+  for (size_t v = 0; v < mesh.tags.size(); ++v)
+    if (mesh.tags[v].arc >= 0) x.row(v) = boundary.at(k, mesh.tags[v].arc, mesh.tags[v].u).transpose();
+  for (size_t a = 0; a < boundary.arcs.size(); ++a) {
+    const BoundaryArc& arc = boundary.arcs[a];
+    if (arc.partner <= static_cast<int>(a) || !closedIn(arc, k)) continue;
+    const std::vector<int> side = chainWithEnd(mesh, static_cast<int>(a)), other = chainWithEnd(mesh, arc.partner);
+    for (size_t i = 0; i < side.size(); ++i) x.row(other[other.size() - 1 - i]) = x.row(side[i]);
+  }
+}
+
+// Cohesive pairs of key k: the edges of each closed cut's two sides, collocated in key k.
+std::vector<CohesivePair> cohesivePairs(const SharedBoundary& boundary, const ReferenceMesh& mesh, int k) {
+  std::vector<CohesivePair> pairs;
+  for (size_t a = 0; a < boundary.arcs.size(); ++a) {
+    const BoundaryArc& arc = boundary.arcs[a];
+    if (arc.partner <= static_cast<int>(a) || !closedIn(arc, k)) continue;
+    const std::vector<int> side = chainWithEnd(mesh, static_cast<int>(a)), other = chainWithEnd(mesh, arc.partner);
+    const size_t n = side.size();
+    for (size_t i = 0; i + 1 < n; ++i) pairs.push_back({side[i], side[i + 1], other[n - 1 - i], other[n - 2 - i]});
+  }
+  return pairs;
+}
+
+// B_k: boundary vertices on the key's outline (not along the inside of a cut it closes).
+std::vector<int> outlineVertices(const SharedBoundary& boundary, const ReferenceMesh& mesh, int k) {
+  std::vector<int> previous(boundary.arcs.size());
+  for (const auto& loopArcs : boundary.loopArcs)
+    for (size_t i = 0; i < loopArcs.size(); ++i) previous[loopArcs[(i + 1) % loopArcs.size()]] = loopArcs[i];
+  std::vector<int> out;
+  for (size_t v = 0; v < mesh.tags.size(); ++v) {
+    const BoundaryTag& t = mesh.tags[v];
+    if (t.arc < 0) continue;
+    const bool inside = closedIn(boundary.arcs[t.arc], k) && (t.u > 0 || closedIn(boundary.arcs[previous[t.arc]], k));
+    if (!inside) out.push_back(static_cast<int>(v));
+  }
+  return out;
+}
+
+// Interior vertices at the uniform-weight average of their neighbours (Tutte), boundary fixed.
+void tutteInterior(const ReferenceMesh& mesh, Eigen::MatrixX2d& x) {
+  const int n = static_cast<int>(mesh.points.size());
+  std::vector<int> unknown(n, -1);
+  int count = 0;
+  for (int v = 0; v < n; ++v)
+    if (mesh.tags[v].arc < 0) unknown[v] = count++;
+  if (count == 0) return;
+  std::vector<Eigen::Triplet<double>> entries;
+  Eigen::MatrixX2d rhs = Eigen::MatrixX2d::Zero(count, 2);
+  for (const Triangle& t : mesh.triangles)
+    for (int c = 0; c < 3; ++c)
+      for (int d = 1; d < 3; ++d) {  // each triangle contributes each directed edge once per side
+        const int v = t[c], w = t[(c + d) % 3];
+        if (unknown[v] < 0) continue;
+        entries.emplace_back(unknown[v], unknown[v], 1.0);
+        if (unknown[w] >= 0) entries.emplace_back(unknown[v], unknown[w], -1.0);
+        else rhs.row(unknown[v]) += x.row(w);
+      }
+  Eigen::SparseMatrix<double> laplacian(count, count);
+  laplacian.setFromTriplets(entries.begin(), entries.end());
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(laplacian);
+  if (solver.info() != Eigen::Success) throw std::runtime_error("Tutte embedding: factorization failed");
+  const Eigen::MatrixX2d interior = solver.solve(rhs);
+  for (int v = 0; v < n; ++v)
+    if (unknown[v] >= 0) x.row(v) = interior.row(unknown[v]);
+}
+
+std::string formatLength(double px) {
+  std::ostringstream out;
+  out.precision(3);
+  out << px;
+  return out.str();
+}
+
+// Arcs, fractions and walk order of the reference mesh's boundary vertices, for Comesh sliding.
+ComeshBoundary comeshBoundary(const SharedBoundary& boundary, const ReferenceMesh& mesh, int keys) {
+  ComeshBoundary out;
+  const size_t n = mesh.tags.size();
+  out.arc.resize(n);
+  out.u.resize(n);
+  out.next.assign(n, -1);
+  for (size_t v = 0; v < n; ++v) {
+    out.arc[v] = mesh.tags[v].arc;
+    out.u[v] = mesh.tags[v].u;
+  }
+  for (size_t a = 0; a < boundary.arcs.size(); ++a) {
+    const std::vector<int> chain = chainWithEnd(mesh, static_cast<int>(a));
+    for (size_t i = 0; i + 1 < chain.size(); ++i) out.next[chain[i]] = chain[i + 1];
+    out.closedIn.emplace_back(keys, 0);
+    for (int k = 0; k < keys; ++k) out.closedIn.back()[k] = closedIn(boundary.arcs[a], k);
+  }
+  auto shared = std::make_shared<const SharedBoundary>(boundary);
+  out.point = [shared](int key, int arc, double u) { return shared->at(key, arc, u); };
+  out.chordDeviation = [shared](int key, int arc, double u0, double u1, double u2) {
+    return shared->chordDeviation(key, arc, u0, u1, u2);
+  };
+  out.arcLength = [shared](int key, int arc) { return shared->arcLength(key, arc); };
+  return out;
+}
+
+struct Attempt {
+  std::optional<Multimesh> multimesh;
+  std::vector<KeyReport> report;
+  int failedKey = -1;
+  Eigen::Vector2d failedAt = Eigen::Vector2d::Zero();
+};
+
+Attempt mapKeys(const Scene& scene, const SharedBoundary& boundary, const ReferenceMesh& mesh,
+                const MultimeshBuildOptions& options) {
+  const int n = static_cast<int>(mesh.points.size()), m = static_cast<int>(scene.keys.size());
+  Eigen::MatrixX2d rest(n, 2);
+  for (int v = 0; v < n; ++v) rest.row(v) = mesh.points[v].transpose();
+  std::vector<char> locked(n);
+  for (int v = 0; v < n; ++v) locked[v] = mesh.tags[v].arc >= 0;
+  Attempt out;
+  std::vector<Eigen::MatrixX2d> positions(m);
+  for (int k = 0; k < m; ++k) {
+    if (options.progress) options.progress("mapping key " + scene.keys[k].name, static_cast<double>(k) / m);
+    Eigen::MatrixX2d& x = positions[k];
+    x = rest;
+    placeBoundary(boundary, mesh, k, x);
+    if (k != scene.reference) tutteInterior(mesh, x);
+    if (k != scene.reference || smallestTriangleArea(mesh.triangles, x).first <= 0) {
+      const UntangleResult r = untangle(mesh.triangles, rest, x, locked, options.untangle);
+      if (!r.injective) {
+        const Triangle& t = mesh.triangles[r.worstTriangle];
+        out.failedKey = k;
+        out.failedAt = (x.row(t[0]) + x.row(t[1]) + x.row(t[2])).transpose() / 3;
+        return out;
+      }
+    }
+  }
+  out.multimesh.emplace(n, mesh.triangles);
+  for (int k = 0; k < m; ++k) {
+    std::vector<CohesivePair> pairs = cohesivePairs(boundary, mesh, k);
+    out.report.push_back({scene.keys[k].name, static_cast<int>(pairs.size()),
+                          smallestTriangleArea(mesh.triangles, positions[k]).first});
+    out.multimesh->addKey(positions[k], std::move(pairs), outlineVertices(boundary, mesh, k));
+  }
+  paintStiffness(*out.multimesh, scene.stiffness, scene.solver.kappa);
+  return out;
+}
+
+}  // namespace
+
+BuiltScene buildMultimesh(const Scene& scene, const MultimeshBuildOptions& options) {
+  BuiltScene built;
+  const int m = static_cast<int>(scene.keys.size());
+  for (int k = 0; k < m; ++k) {
+    if (options.progress) options.progress("tracing " + scene.keys[k].name, static_cast<double>(k) / m);
+    try {
+      const RgbaImage image = readPng(scene.keys[k].drawing);
+      built.drawingSizes.push_back({image.width, image.height});
+      built.outlines.push_back(traceOutlines(shapeMask(image, scene.tracing), scene.tracing, scene.keys[k].drawing));
+    } catch (const InputError& e) {
+      throw InputError(std::filesystem::path(scene.file).filename().string() + ": key " + inQuotes(scene.keys[k].name) +
+                       ": drawing " + e.what());
+    }
+    built.shapes.push_back(buildKeyShape(scene, k, built.outlines.back(), options.shape));
+  }
+  const std::string file = std::filesystem::path(scene.file).filename().string();
+  double edgeLength = scene.edgeLength;
+  for (int attempt = 0;; ++attempt) {
+    SharedBoundaryOptions bo;
+    bo.edgeLength = edgeLength;
+    const SharedBoundary boundary = matchBoundaries(scene, built.shapes, bo);
+    if (options.progress) options.progress("meshing " + scene.keys[scene.reference].name, 0);
+    ConformingMeshOptions mo;
+    mo.maxEdgeLength = edgeLength;
+    ReferenceMesh mesh;
+    try {
+      mesh = meshReference(boundary, scene.reference, mo);
+    } catch (const InputError& e) {
+      throw InputError(file + ": key " + inQuotes(scene.keys[scene.reference].name) + ": cannot mesh: " + e.what());
+    }
+    Attempt result = mapKeys(scene, boundary, mesh, options);
+    if (result.multimesh) {
+      built.multimesh = std::move(result.multimesh);
+      built.boundary = comeshBoundary(boundary, mesh, m);
+      built.report = std::move(result.report);
+      built.edgeLength = edgeLength;
+      built.attempts = attempt + 1;
+      built.multimesh->validate();
+      return built;
+    }
+    if (attempt >= options.refinements)
+      throw InputError(file + ": key " + inQuotes(scene.keys[result.failedKey].name) +
+                       ": cannot map the mesh onto this key without folding triangles near " + formatPoint(result.failedAt) +
+                       " (tried edge lengths down to " + formatLength(edgeLength) +
+                       " px); check that its features and cuts match the other keys there");
+    edgeLength /= 1.5;
+  }
+}
+
+}  // namespace ib

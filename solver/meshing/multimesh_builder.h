@@ -1,0 +1,53 @@
+// Scene to multimesh (design.md, data flow "scene" and "multimesh"): trace every key's drawing,
+// snap features, apply cuts, match boundaries, mesh the reference key and map the mesh onto every
+// other key without foldovers.
+#pragma once
+
+#include "comesh/comesh_mesh.h"
+#include "meshing/key_shape.h"
+#include "meshing/reference_mesh.h"
+#include "meshing/untangle.h"
+#include "multimesh/multimesh.h"
+#include "scene/scene.h"
+
+#include <array>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace ib {
+
+struct MultimeshBuildOptions {
+  KeyShapeOptions shape;
+  UntangleOptions untangle;
+  // Attempts after the first when a key cannot be mapped without foldovers; each retry divides
+  // the edge length by 1.5. Default 2.
+  int refinements = 2;
+  // Called with a stage name and the fraction done, for progress display. Optional.
+  std::function<void(const std::string& stage, double fraction)> progress;
+};
+
+// What a built scene is made of, for pictures and checks.
+struct KeyReport {
+  std::string key;
+  int cohesiveEdges = 0;   // pairs in C_i
+  double smallestArea = 0; // px^2: smallest triangle area in this key
+};
+
+struct BuiltScene {
+  std::vector<std::array<int, 2>> drawingSizes;  // [key]: width, height of the drawing in pixels
+  std::vector<std::vector<Outline>> outlines;  // [key]: traced drawing
+  std::vector<KeyShape> shapes;                // [key]: after features and cuts
+  std::optional<Multimesh> multimesh;          // keys in scene order, positions in drawing pixels
+  ComeshBoundary boundary;                     // the multimesh's boundary vertices on the keys' outlines
+  std::vector<KeyReport> report;               // [key]
+  double edgeLength = 0;                       // px: the edge length finally used
+  int attempts = 0;                            // meshing attempts made (1 = no refinement needed)
+};
+
+// Throws InputError naming the file, key and place for bad drawings, features, cuts, loops that do
+// not match, and keys that cannot be mapped without foldovers even after refinement.
+BuiltScene buildMultimesh(const Scene& scene, const MultimeshBuildOptions& options);
+
+}  // namespace ib

@@ -1,0 +1,58 @@
+// Boundary correspondence across keys (design.md, "The scene model"): every key's loops are
+// matched to the reference key's, cut into arcs at the features, and every arc gets the same
+// number of boundary edges in every key, spaced by arc length.
+#pragma once
+
+#include "core/plane_geometry.h"
+#include "meshing/key_shape.h"
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+namespace ib {
+
+// A feature-to-feature stretch of one reference loop (a whole loop when it has one feature or
+// none). Arcs of a cut's two sides are partners: collocated, reversed, in the keys that close it.
+struct BoundaryArc {
+  int loop = 0;               // reference loop index
+  int indexInLoop = 0;        // its place among the loop's arcs, in walking order
+  std::string from, to;       // features at its ends; "" for a featureless loop's aligned start
+  int segments = 1;           // boundary edges along it, the same in every key
+  int partner = -1;           // the arc along the other side of the same cut, or -1
+  std::vector<int> closedIn;  // keys where this arc and its partner are collocated
+};
+
+// One key's loops in reference loop order, each parametrized by arc length, with the arc length
+// at which each of its arcs starts.
+struct KeyBoundary {
+  std::vector<ArcLengthLoop> loops;
+  std::vector<std::vector<double>> arcStarts;  // [loop][i]: start of the loop's i-th arc
+};
+
+struct SharedBoundaryOptions {
+  double edgeLength = 8;  // px: longest boundary edge in any key (arcs are split to fit). Default 8.
+  int alignmentSamples = 64;  // samples per loop for the automatic start of featureless loops. Default 64.
+};
+
+struct SharedBoundary {
+  std::vector<BoundaryArc> arcs;             // in loop order, each loop's arcs in walking order
+  std::vector<std::vector<int>> loopArcs;    // [loop]: indices into arcs
+  std::vector<KeyBoundary> keys;             // [key]
+
+  double arcLength(int key, int arc) const;
+  // The point of key `key` at fraction u in [0, 1] of arc `arc`'s length.
+  Eigen::Vector2d at(int key, int arc, double u) const;
+  // Largest distance of key `key`'s outline between fractions u0 <= u1 <= u2 of arc `arc` from
+  // the chords u0 -> u1 and u1 -> u2 between their points (px); u1 = u2 for a single chord.
+  double chordDeviation(int key, int arc, double u0, double u1, double u2) const;
+};
+
+// Matches the keys' loops to the reference key's. Every featured loop must carry the same
+// features in the same cyclic order in every key; featureless loops are paired by nearest
+// centroid and size, and started where a rigid alignment of arc-length samples fits best. Throws
+// InputError naming the file, the keys, the loop (by its features) and the features that differ.
+SharedBoundary matchBoundaries(const Scene& scene, const std::vector<KeyShape>& shapes,
+                               const SharedBoundaryOptions& options);
+
+}  // namespace ib

@@ -1,0 +1,53 @@
+// Drawings to outlines: a shape mask from a PNG (alpha, or distance from a background colour),
+// traced by potrace into smooth curves, flattened to polygons. Coordinates are drawing pixels
+// (x right, y down, pixel (i, j) covering [i, i+1] x [j, j+1]).
+#pragma once
+
+#include "core/png_image.h"
+
+#include <Eigen/Core>
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace ib {
+
+// An open list of points; as a loop, the last point connects back to the first.
+using Polyline = std::vector<Eigen::Vector2d>;
+
+// One connected piece of a drawing: its outer loop (positive signed area) and its holes
+// (negative signed area), each without repeated end point.
+struct Outline {
+  Polyline outer;
+  std::vector<Polyline> holes;
+};
+
+struct TracingOptions {
+  double tolerance = 0.05;     // px: potrace's curve-joining tolerance and our flattening error
+  double minArea = 16;        // px^2: components and holes with less area are specks, dropped
+  int alphaThreshold = 128;   // with alpha: a pixel belongs to the shape when alpha >= this (1..255)
+  // Without alpha: the background colour (RGB) and the RGB distance above which a pixel belongs
+  // to the shape. Set background to use it even when the drawing has alpha.
+  std::optional<std::array<int, 3>> background;  // default: white for drawings without alpha
+  double colorThreshold = 64;                    // 1..441
+};
+
+// A pixel mask, row-major, true where the shape is.
+struct ShapeMask {
+  int width = 0, height = 0;
+  std::vector<char> inside;
+  bool at(int x, int y) const { return inside[static_cast<size_t>(y) * width + x] != 0; }
+};
+
+ShapeMask shapeMask(const RgbaImage& image, const TracingOptions& options);
+
+// Traces the mask into components, largest first. label names the drawing in messages. Throws
+// InputError when nothing is left after dropping specks.
+std::vector<Outline> traceOutlines(const ShapeMask& mask, const TracingOptions& options, const std::string& label);
+
+// Signed area of a loop by the shoelace formula on the coordinates as given: positive when the
+// loop turns counterclockwise with y up (which looks clockwise on screen, y down).
+double loopArea(const Polyline& loop);
+
+}  // namespace ib

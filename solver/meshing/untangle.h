@@ -1,0 +1,41 @@
+// Foldover-free maps with a fixed boundary: the untangling method of Garanzha, Kaporin,
+// Kudryavtseva, Protais, Ray and Sokolov, "Foldover-free maps in 50 lines of code" (2021).
+// Minimizes sum_t area_t [(1 - theta) |J|^2 / chi(det J, eps) + theta (det^2 J + 1) / chi(det J, eps)],
+// chi(D, eps) = (D + sqrt(eps^2 + D^2)) / 2, by L-BFGS, shrinking eps as the paper prescribes,
+// so that a tangled start (folded triangles) ends with every triangle positively oriented.
+#pragma once
+
+#include "multimesh/multimesh.h"
+
+#include <Eigen/Core>
+#include <vector>
+
+namespace ib {
+
+struct UntangleOptions {
+  double theta = 0.125;        // weight of the area term against the shape term, in (0, 1). Default 1/8.
+  int outerIterations = 60;     // eps updates at most. Default 60.
+  int innerIterations = 300;    // L-BFGS iterations per eps at most. Default 300.
+  int memory = 7;               // L-BFGS history length. Default 7.
+  double energyTolerance = 1e-3;  // stop once untangled and the energy changes by less than this, relatively. Default 1e-3.
+};
+
+struct UntangleResult {
+  bool injective = false;    // every triangle has positive signed area
+  double minArea = 0;        // px^2: the smallest signed triangle area
+  int worstTriangle = -1;    // the triangle with that area
+  int outerIterations = 0;
+  int innerIterations = 0;
+};
+
+// rest: positions in which every triangle is positive (n x 2), the shape each triangle should
+// keep up to scale. positions: the start (n x 2), updated in place; rows with locked[v] != 0
+// never move. The map is scaled so that rest and target have the same total area.
+UntangleResult untangle(const std::vector<Triangle>& triangles, const Eigen::MatrixX2d& rest,
+                        Eigen::MatrixX2d& positions, const std::vector<char>& locked,
+                        const UntangleOptions& options);
+
+// The smallest signed area over triangles and where it is.
+std::pair<double, int> smallestTriangleArea(const std::vector<Triangle>& triangles, const Eigen::MatrixX2d& positions);
+
+}  // namespace ib

@@ -1,0 +1,81 @@
+#include "multimesh/mesh_svg.h"
+
+#include <cmath>
+#include <sstream>
+#include <vector>
+
+namespace ib {
+
+namespace {
+
+std::string base64(const std::string& bytes) {
+  static const char* digits = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  out.reserve((bytes.size() + 2) / 3 * 4);
+  for (size_t i = 0; i < bytes.size(); i += 3) {
+    const unsigned a = static_cast<unsigned char>(bytes[i]);
+    const unsigned b = i + 1 < bytes.size() ? static_cast<unsigned char>(bytes[i + 1]) : 0;
+    const unsigned c = i + 2 < bytes.size() ? static_cast<unsigned char>(bytes[i + 2]) : 0;
+    const unsigned v = a << 16 | b << 8 | c;
+    out += digits[v >> 18 & 63];
+    out += digits[v >> 12 & 63];
+    out += i + 1 < bytes.size() ? digits[v >> 6 & 63] : '=';
+    out += i + 2 < bytes.size() ? digits[v & 63] : '=';
+  }
+  return out;
+}
+
+std::string escaped(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    if (c == '<') out += "&lt;";
+    else if (c == '>') out += "&gt;";
+    else if (c == '&') out += "&amp;";
+    else if (c == '"') out += "&quot;";
+    else out += c;
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string meshSvg(const Multimesh& mesh, int key, const KeyShape& shape, const std::string& drawingPng, int width,
+                    int height) {
+  const Eigen::MatrixX2d x = mesh.keyPositions(key);
+  const double stroke = std::max(0.15, std::max(width, height) / 1500.0);  // px
+  std::ostringstream svg;
+  svg.precision(6);
+  svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 " << width << ' ' << height << "\" width=\"" << width
+      << "\" height=\"" << height << "\">\n";
+  svg << "<image width=\"" << width << "\" height=\"" << height << "\" opacity=\"0.6\" href=\"data:image/png;base64,"
+      << base64(drawingPng) << "\"/>\n";
+  svg << "<path fill=\"none\" stroke=\"#1f5fbf\" stroke-width=\"" << stroke << "\" stroke-linejoin=\"round\" d=\"";
+  for (const Triangle& t : mesh.triangles())
+    svg << 'M' << x(t[0], 0) << ',' << x(t[0], 1) << 'L' << x(t[1], 0) << ',' << x(t[1], 1) << 'L' << x(t[2], 0) << ','
+        << x(t[2], 1) << 'Z';
+  svg << "\"/>\n<path fill=\"none\" stroke=\"#e0201b\" stroke-width=\"" << 3 * stroke << "\" d=\"";
+  for (const CohesivePair& p : mesh.cohesivePairs(key))
+    svg << 'M' << x(p.a, 0) << ',' << x(p.a, 1) << 'L' << x(p.b, 0) << ',' << x(p.b, 1);
+  svg << "\"/>\n";
+  const double radius = 6 * stroke, font = 40 * stroke;
+  // Labels point away from the middle of the mesh, so features on opposite sides do not collide.
+  const double middle = 0.5 * (x.col(0).minCoeff() + x.col(0).maxCoeff());
+  std::vector<Eigen::Vector2d> labelled;  // features already drawn: collocated ones stack their labels
+  for (const ShapeLoop& loop : shape.loops)
+    for (size_t i = 0; i < loop.points.size(); ++i) {
+      if (loop.features[i].empty()) continue;
+      const Eigen::Vector2d& p = loop.points[i];
+      int below = 0;
+      for (const Eigen::Vector2d& q : labelled) below += (q - p).norm() < radius;
+      labelled.push_back(p);
+      svg << "<circle cx=\"" << p.x() << "\" cy=\"" << p.y() << "\" r=\"" << radius << "\" fill=\"#f0a000\"/>"
+          << "<text text-anchor=\"" << (p.x() < middle ? "end" : "start") << "\" x=\""
+          << p.x() + (p.x() < middle ? -1.5 : 1.5) * radius << "\" y=\"" << p.y() - 1.5 * radius + 1.1 * font * below
+          << "\" font-size=\"" << font
+          << "\" font-family=\"sans-serif\" fill=\"#804000\">" << escaped(loop.features[i]) << "</text>\n";
+    }
+  svg << "</svg>\n";
+  return svg.str();
+}
+
+}  // namespace ib

@@ -1,0 +1,226 @@
+#include "scene/scene.h"
+
+#include "core/atomic_file.h"
+#include "core/error.h"
+#include "core/json_fields.h"
+#include "interpolation/interpolator.h"
+#include "scene/scene_animation.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <set>
+
+namespace ib {
+
+using nlohmann::json;
+
+namespace {
+
+using namespace json_fields;
+
+CutKind cutKind(const json& cut, const Context& at) {
+  const std::string kind = text(cut, "kind", at);
+  if (kind == "notch") return CutKind::kNotch;
+  if (kind == "split") return CutKind::kSplit;
+  if (kind == "slit") return CutKind::kSlit;
+  throw at.in("kind").error(inQuotes(kind) + " is not a cut kind (notch, split or slit)");
+}
+
+CutSpec parseCut(const json& j, const Context& key) {
+  const Context first = key.in("cut");
+  requireObject(j, first, {"name", "kind", "points"});
+  CutSpec cut;
+  cut.name = text(j, "name", first);
+  const Context at = key.in("cut " + inQuotes(cut.name));
+  if (cut.name.find('.') != std::string::npos) throw at.error("a cut's name may not contain '.'");
+  cut.kind = cutKind(j, at);
+  if (!j.contains("points") || !j["points"].is_array() || j["points"].size() < 2)
+    throw at.error("needs \"points\": at least 2 points [x, y]");
+  for (size_t i = 0; i < j["points"].size(); ++i)
+    cut.points.push_back(point(j["points"][i], at.in("point " + std::to_string(i + 1))));
+  for (size_t i = 1; i < cut.points.size(); ++i)
+    if ((cut.points[i] - cut.points[i - 1]).norm() < 1e-9)
+      throw at.error("points " + std::to_string(i) + " and " + std::to_string(i + 1) + " coincide");
+  return cut;
+}
+
+KeySpec parseKey(const json& j, const Context& scene, const std::filesystem::path& folder) {
+  requireObject(j, scene.in("key"), {"name", "drawing", "features", "cuts"});
+  KeySpec key;
+  key.name = text(j, "name", scene.in("key"));
+  const Context at = scene.in("key " + inQuotes(key.name));
+  const std::filesystem::path drawing = text(j, "drawing", at);
+  key.drawing = (drawing.is_absolute() ? drawing : folder / drawing).lexically_normal().string();
+  if (j.contains("features")) {
+    const json& features = j["features"];
+    if (!features.is_object()) throw at.in("features").error("must be an object {\"name\": [x, y], ...}");
+    for (auto it = features.begin(); it != features.end(); ++it) {
+      if (it.key().empty()) throw at.in("features").error("a feature needs a non-empty name");
+      key.features[it.key()] = point(it.value(), at.in("feature " + inQuotes(it.key())));
+    }
+  }
+  if (j.contains("cuts")) {
+    if (!j["cuts"].is_array()) throw at.in("cuts").error("must be an array of cuts");
+    for (const json& c : j["cuts"]) {
+      key.cuts.push_back(parseCut(c, at));
+      for (size_t other = 0; other + 1 < key.cuts.size(); ++other)
+        if (key.cuts[other].name == key.cuts.back().name)
+          throw at.error("cut " + inQuotes(key.cuts.back().name) + " is drawn twice");
+    }
+  }
+  return key;
+}
+
+void parseTracing(const json& j, const Context& at, TracingOptions& t) {
+  requireObject(j, at, {"tolerance", "min_area", "alpha_threshold", "background", "color_threshold"});
+  t.tolerance = number(j, "tolerance", t.tolerance, at, 0, 10, true);
+  t.minArea = number(j, "min_area", t.minArea, at, 0, 1e9);
+  t.alphaThreshold = static_cast<int>(number(j, "alpha_threshold", t.alphaThreshold, at, 1, 255));
+  t.colorThreshold = number(j, "color_threshold", t.colorThreshold, at, 0, 442, true);
+  if (j.contains("background")) {
+    const json& b = j["background"];
+    if (!b.is_array() || b.size() != 3) throw at.in("background").error("must be [r, g, b], each 0..255");
+    std::array<int, 3> rgb{};
+    for (int c = 0; c < 3; ++c) {
+      if (!b[c].is_number_integer() || b[c].get<int>() < 0 || b[c].get<int>() > 255)
+        throw at.in("background").error("must be [r, g, b], each 0..255");
+      rgb[c] = b[c].get<int>();
+    }
+    t.background = rgb;
+  }
+}
+
+void parseSolver(const json& j, const Context& at, SceneSolverParams& s) {
+  requireObject(j, at, {"lambda", "tau", "alpha", "kappa", "non_overlap"});
+  s.lambda = number(j, "lambda", s.lambda, at, 0, 1e12);
+  s.tau = number(j, "tau", s.tau, at, 0, 1e6, true);
+  s.alpha = number(j, "alpha", s.alpha, at, 0, 1);
+  s.kappa = number(j, "kappa", s.kappa, at, 0, 1e6, true);
+  s.nonOverlap = boolean(j, "non_overlap", s.nonOverlap, at);
+}
+
+// Every key places the same plain features; a cut's features are placed exactly by the keys where
+// it is open; keys where it is closed draw it with the same kind.
+void checkCorrespondence(const Scene& scene, const Context& at) {
+  std::map<std::string, std::pair<CutKind, std::vector<int>>> cuts;  // name -> kind, keys closed
+  for (int k = 0; k < static_cast<int>(scene.keys.size()); ++k)
+    for (const CutSpec& c : scene.keys[k].cuts) {
+      auto [it, fresh] = cuts.insert({c.name, {c.kind, {}}});
+      if (!fresh && it->second.first != c.kind)
+        throw at.in("cut " + inQuotes(c.name)).error("is a different kind in key " + inQuotes(scene.keys[k].name) +
+                                                  " than in key " + inQuotes(scene.keys[it->second.second[0]].name));
+      it->second.second.push_back(k);
+    }
+  std::map<std::string, std::string> cutOfFeature;
+  for (const auto& [name, cut] : cuts) {
+    if (cut.second.size() == scene.keys.size())
+      throw at.in("cut " + inQuotes(name)).error("is closed in every key; a cut must open in at least one key");
+    for (const std::string& f : cutFeatureNames(name, cut.first)) cutOfFeature[f] = name;
+  }
+  // Plain features: the union over keys must be placed everywhere.
+  std::map<std::string, std::string> plain;  // feature -> a key placing it
+  for (const KeySpec& key : scene.keys)
+    for (const auto& [f, p] : key.features) {
+      if (cutOfFeature.count(f)) continue;
+      const size_t dot = f.find('.');
+      if (dot != std::string::npos) {  // reserved for cut features
+        const std::string cut = f.substr(0, dot);
+        throw at.in("key " + inQuotes(key.name))
+            .error("feature " + inQuotes(f) +
+                   (cuts.count(cut) ? " is not one that cut " + inQuotes(cut) + " creates" : " names no cut of this scene"));
+      }
+      plain.insert({f, key.name});
+    }
+  for (const KeySpec& key : scene.keys)
+    for (const auto& [f, owner] : plain)
+      if (!key.features.count(f))
+        throw at.in("key " + inQuotes(key.name)).error("does not place feature " + inQuotes(f) + " (key " + inQuotes(owner) +
+                                                    " does)");
+  for (const auto& [name, cut] : cuts)
+    for (int k = 0; k < static_cast<int>(scene.keys.size()); ++k) {
+      const bool closed = std::count(cut.second.begin(), cut.second.end(), k) > 0;
+      for (const std::string& f : cutFeatureNames(name, cut.first)) {
+        const bool placed = scene.keys[k].features.count(f) > 0;
+        if (closed && placed)
+          throw at.in("cut " + inQuotes(name)).error("key " + inQuotes(scene.keys[k].name) + " draws the cut, so it may not place feature " +
+                                                  inQuotes(f) + " (the cut creates it)");
+        if (!closed && !placed)
+          throw at.in("cut " + inQuotes(name)).error("key " + inQuotes(scene.keys[k].name) + " does not place feature " + inQuotes(f));
+      }
+    }
+}
+
+}  // namespace
+
+std::vector<std::string> cutFeatureNames(const std::string& cut, CutKind kind) {
+  switch (kind) {
+    case CutKind::kNotch: return {cut + ".left", cut + ".right", cut + ".tip"};
+    case CutKind::kSplit: return {cut + ".start.left", cut + ".start.right", cut + ".end.left", cut + ".end.right"};
+    case CutKind::kSlit: return {cut + ".start", cut + ".end"};
+  }
+  return {};
+}
+
+int Scene::keyIndex(const std::string& name) const {
+  for (size_t k = 0; k < keys.size(); ++k)
+    if (keys[k].name == name) return static_cast<int>(k);
+  return -1;
+}
+
+Scene parseScene(const std::string& source, const std::string& path) {
+  const Context at{std::filesystem::path(path).filename().string(), ""};
+  json j;
+  try {
+    j = json::parse(source);
+  } catch (const json::parse_error& e) {
+    throw at.error(std::string("malformed JSON: ") + e.what());
+  }
+  requireObject(j, at,
+                {"version", "reference", "edge_length", "tracing", "solver", "keys", "timeline", "dynamics", "stiffness"});
+  if (!j.contains("version") || !j["version"].is_number_integer() || j["version"].get<int>() != 1)
+    throw at.in("version").error("must be 1 (the only scene format version so far)");
+  Scene scene;
+  scene.file = path;
+  if (!j.contains("keys") || !j["keys"].is_array() || j["keys"].empty())
+    throw at.in("keys").error("needs at least one key");
+  const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+  for (const json& k : j["keys"]) {
+    scene.keys.push_back(parseKey(k, at, folder));
+    if (scene.keyIndex(scene.keys.back().name) != static_cast<int>(scene.keys.size()) - 1)
+      throw at.in("key " + inQuotes(scene.keys.back().name)).error("is named twice");
+  }
+  if (j.contains("reference")) {
+    scene.reference = j["reference"].is_string() ? scene.keyIndex(j["reference"].get<std::string>()) : -1;
+    if (scene.reference < 0) throw at.in("reference").error("must name one of the keys");
+  }
+  scene.edgeLength = number(j, "edge_length", scene.edgeLength, at, 0.5, 1e6);
+  if (j.contains("tracing")) parseTracing(j["tracing"], at.in("tracing"), scene.tracing);
+  if (j.contains("solver")) parseSolver(j["solver"], at.in("solver"), scene.solver);
+  checkCorrespondence(scene, at);
+  std::vector<std::string> names;
+  for (const KeySpec& key : scene.keys) names.push_back(key.name);
+  scene.timeline = j.contains("timeline") ? parseTimeline(j["timeline"], names, at.file) : defaultTimeline(names);
+  if (j.contains("dynamics")) scene.dynamics = parseDynamics(j["dynamics"], at.in("dynamics"));
+  if (j.contains("stiffness")) scene.stiffness = parseStiffness(j["stiffness"], at.in("stiffness"), names, folder.string());
+  return scene;
+}
+
+InterpolationParams interpolationParams(const SceneSolverParams& solver) {
+  InterpolationParams p;
+  p.cohesive.lambda = solver.lambda;
+  p.cohesive.tau = solver.tau;
+  p.cohesive.alpha = solver.alpha;
+  p.nonOverlap = solver.nonOverlap;
+  return p;
+}
+
+Scene loadScene(const std::string& path) {
+  std::error_code error;
+  const std::filesystem::path inside = std::filesystem::path(path) / "scene.json";
+  if (std::filesystem::is_directory(path, error) && std::filesystem::exists(inside, error))
+    throw InputError(path + ": is a folder; the scene is its file " + inside.string());
+  return parseScene(readFile(path), path);
+}
+
+}  // namespace ib

@@ -1,0 +1,73 @@
+// The scene file: key drawings and the annotations that tie them together (features, cuts),
+// the reference key, the target edge length, tracing and solver parameters, the timeline,
+// dynamics and stiffness painting. Format: README.md, "Scene file". Coordinates are drawing
+// pixels, y down; paths are relative to the scene file.
+#pragma once
+
+#include "animation/dynamics.h"
+#include "animation/timeline.h"
+#include "meshing/stiffness_paint.h"
+#include "meshing/tracing.h"
+
+#include <Eigen/Core>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace ib {
+
+// notch: from the outline into the shape (first point on the outline, last inside);
+// split: from the outline to the outline; slit: inside the shape at both ends (a hole opens).
+enum class CutKind { kNotch, kSplit, kSlit };
+
+// A cohesive zone drawn in a key where the shape is closed along it.
+struct CutSpec {
+  std::string name;
+  CutKind kind = CutKind::kNotch;
+  Polyline points;  // >= 2, drawing pixels
+};
+
+// The features a cut creates at its ends, named after it (see README.md, "Scene file"):
+// notch NAME.left, NAME.right (at the mouth, as seen walking into the shape), NAME.tip;
+// split NAME.start.left, NAME.start.right, NAME.end.left, NAME.end.right; slit NAME.start, NAME.end.
+std::vector<std::string> cutFeatureNames(const std::string& cut, CutKind kind);
+
+struct KeySpec {
+  std::string name;
+  std::string drawing;                               // path, resolved against the scene's folder
+  std::map<std::string, Eigen::Vector2d> features;   // placed by the author, drawing pixels
+  std::vector<CutSpec> cuts;                         // cuts closed in this key
+};
+
+struct SceneSolverParams {
+  double lambda = 4000;     // cohesive stiffness (paper eq. 11)
+  double tau = 1e-3;        // cohesive threshold, in units of the shape size sqrt(mean key area)
+  double alpha = 0.5;       // shear (0) versus stretch (1) resistance of cohesive pairs (eq. 13)
+  double kappa = 1;         // stiffness of every unpainted triangle (see "stiffness")
+  bool nonOverlap = false;  // W_O on or off
+};
+
+struct Scene {
+  std::string file;                 // the scene file, as named in messages
+  std::vector<KeySpec> keys;        // in file order; the cyclic order of the keys
+  int reference = 0;                // index of the key that is triangulated
+  double edgeLength = 8;            // px: target boundary edge length in the reference key
+  TracingOptions tracing;
+  SceneSolverParams solver;
+  Timeline timeline;                // the default timeline (every key, a second apart) when absent
+  DynamicsParams dynamics;          // epsilon = 0 (off) when absent
+  StiffnessPaint stiffness;         // nothing painted when absent
+
+  int keyIndex(const std::string& name) const;  // -1 when absent
+};
+
+struct InterpolationParams;  // interpolator.h
+// The interpolation energies' parameters (lambda, tau, alpha, non-overlap) the scene asks for.
+InterpolationParams interpolationParams(const SceneSolverParams& solver);
+
+// Reads and validates a scene: every problem is an InputError naming the file, the field and the
+// key, e.g. `walk.json: key "arch": cut "split": needs at least 2 points`. Drawings are not read.
+Scene loadScene(const std::string& path);
+Scene parseScene(const std::string& text, const std::string& path);
+
+}  // namespace ib

@@ -1,0 +1,96 @@
+// The scene file's "timeline" object (docs/scene-format.md) to a Timeline.
+#include "scene/scene_animation.h"
+
+#include "core/error.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ib {
+
+using nlohmann::json;
+using namespace json_fields;
+
+namespace {
+
+// Relative weights {"key": value, ...}, non-negative with a positive sum, normalized to sum 1.
+Eigen::VectorXd parseWeights(const json& j, const std::vector<std::string>& keys, const Context& at) {
+  if (!j.is_object() || j.empty()) throw at.error("must be an object {\"key\": weight, ...} naming at least one key");
+  Eigen::VectorXd w = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(keys.size()));
+  for (auto it = j.begin(); it != j.end(); ++it) {
+    const auto found = std::find(keys.begin(), keys.end(), it.key());
+    if (found == keys.end()) throw at.error(inQuotes(it.key()) + " is not a key of this scene");
+    w(found - keys.begin()) = number(j, it.key(), 0, at, 0, 1e9);
+  }
+  if (!(w.sum() > 0)) throw at.error("needs a positive weight for at least one key");
+  return w / w.sum();
+}
+
+Easing parseEasing(const json& j, const Context& at) {
+  const std::string where = at.file + ": " + at.where + ": ";
+  if (j.is_string()) return namedEasing(j.get<std::string>(), where);
+  if (j.is_object() && j.size() == 1 && j.contains("cubic_bezier")) {
+    const json& c = j["cubic_bezier"];
+    if (!c.is_array() || c.size() != 4 || !std::all_of(c.begin(), c.end(), [](const json& v) { return v.is_number(); }))
+      throw at.in("cubic_bezier").error("must be [x1, y1, x2, y2]");
+    return cubicBezierEasing({c[0].get<double>(), c[1].get<double>(), c[2].get<double>(), c[3].get<double>()}, where);
+  }
+  throw at.error("must be a name (linear, ease-in, ease-out, ease-in-out, hold) or {\"cubic_bezier\": [x1, y1, x2, y2]}");
+}
+
+}  // namespace
+
+Timeline parseTimeline(const json& j, const std::vector<std::string>& keyNames, const std::string& file) {
+  const Context at = Context{file, ""}.in("timeline");
+  requireObject(j, at, {"fps", "loop", "marks"});
+  const double fps = number(j, "fps", 24, at, 0, 1000, true);
+  const bool loop = boolean(j, "loop", false, at);
+  if (!j.contains("marks")) return defaultTimeline(keyNames, fps, loop);
+  const json& marksJson = j["marks"];
+  if (!marksJson.is_array() || marksJson.empty()) throw at.in("marks").error("must be an array of at least one mark");
+  std::vector<TimelineMark> marks;
+  std::vector<TimelineSegment> segments;
+  for (size_t k = 0; k < marksJson.size(); ++k) {
+    const json& mj = marksJson[k];
+    const Context here = at.in("mark " + std::to_string(k + 1));
+    requireObject(mj, here, {"time", "key", "weights", "ease", "blend"});
+    if (!mj.contains("time")) throw here.error("missing field \"time\" (seconds)");
+    TimelineMark mark;
+    mark.time = number(mj, "time", 0, here, -1e9, 1e9);
+    if (!marks.empty() && !(mark.time > marks.back().time))
+      throw here.in("time").error("must be later than mark " + std::to_string(k) + "'s time");
+    if (mj.contains("key") == mj.contains("weights")) throw here.error("needs exactly one of \"key\" and \"weights\"");
+    if (mj.contains("key")) {
+      mark.label = text(mj, "key", here);
+      const auto found = std::find(keyNames.begin(), keyNames.end(), mark.label);
+      if (found == keyNames.end()) throw here.in("key").error(inQuotes(mark.label) + " is not a key of this scene");
+      mark.weights = Eigen::VectorXd::Unit(static_cast<Eigen::Index>(keyNames.size()), found - keyNames.begin());
+    } else {
+      mark.label = "breakdown";
+      mark.weights = parseWeights(mj["weights"], keyNames, here.in("weights"));
+    }
+    const bool last = k + 1 == marksJson.size();
+    if (last && (mj.contains("ease") || mj.contains("blend")))
+      throw here.error("the last mark starts no segment, so it takes no \"ease\" or \"blend\"");
+    if (!last) {
+      TimelineSegment segment;
+      if (mj.contains("ease")) segment.easing = parseEasing(mj["ease"], here.in("ease"));
+      if (mj.contains("blend")) {
+        const json& blend = mj["blend"];
+        if (!blend.is_array() || blend.empty()) throw here.in("blend").error("must be an array of control weights");
+        for (size_t c = 0; c < blend.size(); ++c)
+          segment.controls.push_back(parseWeights(blend[c], keyNames, here.in("blend " + std::to_string(c + 1))));
+      }
+      segments.push_back(std::move(segment));
+    }
+    marks.push_back(std::move(mark));
+  }
+  if (loop) {
+    if (marks.size() < 2) throw at.in("loop").error("a looping timeline needs at least two marks");
+    if ((marks.back().weights - marks.front().weights).cwiseAbs().maxCoeff() > 1e-9)
+      throw at.in("loop").error("the last mark must repeat the first mark's pose, so the loop closes without a jump");
+  }
+  return Timeline(fps, loop, std::move(marks), std::move(segments));
+}
+
+}  // namespace ib

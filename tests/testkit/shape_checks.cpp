@@ -1,0 +1,64 @@
+#include "testkit/shape_checks.h"
+
+#include "core/plane_geometry.h"
+#include "interpolation/deformation_energy.h"
+
+#include <Eigen/LU>
+#include <limits>
+
+namespace test {
+
+namespace {
+
+double distanceToSegment(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& p) {
+  return (a + ib::closestParameter(a, b, p) * (b - a) - p).norm();
+}
+
+}  // namespace
+
+double distanceToShape(const ib::KeyShape& shape, const Eigen::Vector2d& p) {
+  double best = std::numeric_limits<double>::infinity();
+  for (const ib::ShapeLoop& loop : shape.loops)
+    for (size_t i = 0, n = loop.points.size(); i < n; ++i)
+      best = std::min(best, distanceToSegment(loop.points[i], loop.points[(i + 1) % n], p));
+  return best;
+}
+
+std::vector<int> meshBoundary(const ib::Multimesh& mesh) {
+  std::vector<int> out;
+  for (auto v : mesh.topology().vertices())
+    if (mesh.topology().is_boundary(v)) out.push_back(v.idx());
+  return out;
+}
+
+std::vector<std::array<int, 2>> boundaryEdges(const ib::Multimesh& mesh) {
+  std::vector<std::array<int, 2>> out;
+  const ib::TopologyMesh& t = mesh.topology();
+  for (auto h : t.halfedges())
+    if (t.is_boundary(h)) out.push_back({t.from_vertex_handle(h).idx(), t.to_vertex_handle(h).idx()});
+  return out;
+}
+
+double distanceToBoundary(const std::vector<std::array<int, 2>>& edges, const Eigen::MatrixX2d& x,
+                          const Eigen::Vector2d& p) {
+  double best = std::numeric_limits<double>::infinity();
+  for (const auto& [a, b] : edges) best = std::min(best, distanceToSegment(x.row(a), x.row(b), p));
+  return best;
+}
+
+double arapDistortion(const ib::Multimesh& mesh, const Eigen::MatrixX2d& x, const Eigen::VectorXd& w, int triangle) {
+  const ib::Triangle t = mesh.triangles()[triangle];
+  Eigen::Matrix2d D;
+  D << x(t[1], 0) - x(t[0], 0), x(t[2], 0) - x(t[0], 0), x(t[1], 1) - x(t[0], 1), x(t[2], 1) - x(t[0], 1);
+  double total = 0;
+  for (int i = 0; i < mesh.keyCount(); ++i) {
+    const Eigen::MatrixX2d X = mesh.keyPositions(i);
+    Eigen::Matrix2d rest;
+    rest << X(t[1], 0) - X(t[0], 0), X(t[2], 0) - X(t[0], 0), X(t[1], 1) - X(t[0], 1), X(t[2], 1) - X(t[0], 1);
+    const Eigen::Matrix2d F = D * rest.inverse();
+    total += w(i) * (F - ib::closestRotation(F)).squaredNorm();
+  }
+  return total;
+}
+
+}  // namespace test
