@@ -3,6 +3,9 @@
 #include "testkit/fixtures.h"
 
 #include <catch2/catch.hpp>
+#include <set>
+#include <stdexcept>
+#include <utility>
 
 using namespace ib;
 
@@ -27,7 +30,7 @@ TEST_CASE("multimesh: every fixture validates and keeps one topology across keys
   }
 }
 
-TEST_CASE("multimesh: key positions and stiffness round-trip through the OpenMesh properties") {
+TEST_CASE("multimesh: key positions and stiffness read back as they were set") {
   Multimesh mesh = unitSquare();
   Eigen::MatrixX2d Y(4, 2);
   Y << 0, 0, 2, 0, 2, 1, 0, 1;
@@ -52,15 +55,43 @@ TEST_CASE("multimesh: a degenerate or inverted rest triangle names the triangle 
   REQUIRE_THROWS_WITH(mesh.validate(), Catch::Contains("triangle 0") && Catch::Contains("key 1"));
 }
 
-TEST_CASE("multimesh: wrong position count, bad indices and non-finite values are input errors") {
+TEST_CASE("multimesh: a wrong position count is a caller's error; bad indices and non-finite values are input errors") {
   Multimesh mesh = unitSquare();
-  REQUIRE_THROWS_AS(mesh.addKey(Eigen::MatrixX2d::Zero(3, 2), {}, {}), InputError);
+  REQUIRE_THROWS_AS(mesh.addKey(Eigen::MatrixX2d::Zero(3, 2), {}, {}), std::invalid_argument);
+  REQUIRE_THROWS_AS(mesh.setStiffness(2, 1.0), std::invalid_argument);
   REQUIRE_THROWS_AS(Multimesh(3, {{0, 1, 5}}), InputError);
   REQUIRE_THROWS_AS(Multimesh(3, {{0, 1, 1}}), InputError);
   Eigen::MatrixX2d X = mesh.keyPositions(0);
   X(2, 1) = std::nan("");
   mesh.setKeyPositions(0, X);
   REQUIRE_THROWS_WITH(mesh.validate(), Catch::Contains("non-finite"));
+}
+
+TEST_CASE("multimesh: edges once each, boundary edges with the shape on their left, boundary flags and loops") {
+  // A 3 x 3 grid of vertices (0..8, row by row, y up) in 8 counter-clockwise triangles: one
+  // interior vertex (4), 16 edges, 8 of them on the boundary, one loop.
+  std::vector<Triangle> triangles;
+  for (int r = 0; r < 2; ++r)
+    for (int c = 0; c < 2; ++c) {
+      const int v = 3 * r + c;
+      triangles.push_back({v, v + 1, v + 4});
+      triangles.push_back({v, v + 4, v + 3});
+    }
+  Multimesh grid(9, triangles);
+  Eigen::MatrixX2d X(9, 2);
+  for (int v = 0; v < 9; ++v) X.row(v) << v % 3, v / 3;
+  grid.addKey(X, {}, {});
+  CHECK(grid.edges().size() == 16);
+  std::set<std::pair<int, int>> seen;
+  for (const Edge& e : grid.edges()) CHECK(seen.insert({std::min(e[0], e[1]), std::max(e[0], e[1])}).second);
+  REQUIRE(grid.boundaryEdges().size() == 8);
+  const Eigen::Vector2d centre(1, 1);
+  for (const Edge& e : grid.boundaryEdges())  // the centre lies to the left of every boundary edge
+    CHECK(signedArea(X.row(e[0]), X.row(e[1]), centre) > 0);
+  for (int v = 0; v < 9; ++v) CHECK(grid.onBoundary()[v] == (v != 4));
+  const auto loops = grid.boundaryLoops();
+  REQUIRE(loops.size() == 1);
+  CHECK(loops[0].size() == 8);
 }
 
 TEST_CASE("multimesh: a non-manifold triangle is rejected") {

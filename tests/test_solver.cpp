@@ -1,4 +1,5 @@
 #include "interpolation/interpolator.h"
+#include "interpolation/placement.h"
 #include "testkit/fixtures.h"
 #include "testkit/reference_local_global.h"
 

@@ -1,10 +1,12 @@
 #include "animation/frame_stream.h"
 
+#include "animation/warm_start.h"
 #include "core/error.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 namespace ib {
@@ -20,8 +22,31 @@ const Multimesh& matching(const Multimesh& mesh, const Timeline& timeline) {
 
 }  // namespace
 
-FrameStream::FrameStream(const Multimesh& mesh, const Timeline& timeline, const InterpolationParams& params,
-                         const SolverOptions& options, const DynamicsParams& dynamics)
+// Everything a stream carries from frame to frame.
+struct FrameStream::State {
+  State(const Multimesh& mesh, const Timeline& timeline, const InterpolationParams& params, const SolverOptions& options,
+        const DynamicsParams& dynamics);
+  AnimationFrame solveFrame(int index, double time, bool warm);
+  void addDynamics(AnimationFrame& frame);
+  double deviation(const Eigen::MatrixX2d& x, const Eigen::MatrixX2d& plain) const;
+  int frameCount() const { return timeline_.frameCount(); }
+  double shapeSize() const { return plain_.shapeSize(); }
+
+  Timeline timeline_;
+  DynamicsParams dynamics_;
+  Interpolator plain_;
+  std::optional<Interpolator> dynamic_;  // with dynamics only: its own history and factorization
+  WarmStartPredictor predictor_;
+  Eigen::VectorXd mass_;    // m_v, summing to 1
+  Eigen::VectorXd anchor_;  // a_v in (0, 1]
+  int next_ = 0;
+  int shown_ = 0;                      // frames of the current run kept below (0, 1 or 2)
+  Eigen::MatrixX2d last_, beforeLast_;  // x(s-1), x(s-2)
+  double lastDeviation_ = 0;           // D(s-1)
+};
+
+FrameStream::State::State(const Multimesh& mesh, const Timeline& timeline, const InterpolationParams& params,
+                          const SolverOptions& options, const DynamicsParams& dynamics)
     : timeline_(timeline), dynamics_(dynamics), plain_(matching(mesh, timeline), params, options) {
   validateDynamics(dynamics, "dynamics: ");
   if (dynamics.enabled()) {
@@ -31,37 +56,53 @@ FrameStream::FrameStream(const Multimesh& mesh, const Timeline& timeline, const 
   }
 }
 
+FrameStream::FrameStream(const Multimesh& mesh, const Timeline& timeline, const InterpolationParams& params,
+                         const SolverOptions& options, const DynamicsParams& dynamics)
+    : state_(std::make_unique<State>(mesh, timeline, params, options, dynamics)) {}
+FrameStream::~FrameStream() = default;
+FrameStream::FrameStream(FrameStream&&) noexcept = default;
+FrameStream& FrameStream::operator=(FrameStream&&) noexcept = default;
+
+int FrameStream::frameCount() const { return state_->frameCount(); }
+bool FrameStream::done() const { return state_->next_ >= frameCount(); }
+const Timeline& FrameStream::timeline() const { return state_->timeline_; }
+const DynamicsParams& FrameStream::dynamics() const { return state_->dynamics_; }
+double FrameStream::shapeSize() const { return state_->shapeSize(); }
+
 void FrameStream::restart() {
-  next_ = 0;
-  shown_ = 0;
-  lastDeviation_ = 0;
-  predictor_.clear();
-  plain_.forgetHistory();
-  if (dynamic_) dynamic_->forgetHistory();
+  State& s = *state_;
+  s.next_ = 0;
+  s.shown_ = 0;
+  s.lastDeviation_ = 0;
+  s.predictor_.clear();
+  s.plain_.forgetHistory();
+  if (s.dynamic_) s.dynamic_->forgetHistory();
 }
 
 AnimationFrame FrameStream::next() {
   if (done()) throw std::out_of_range("frame stream: all " + std::to_string(frameCount()) + " frames were taken");
-  AnimationFrame frame = solveFrame(next_, timeline_.frameTime(next_), true);
-  ++next_;
+  State& s = *state_;
+  AnimationFrame frame = s.solveFrame(s.next_, s.timeline_.frameTime(s.next_), true);
+  ++s.next_;
   return frame;
 }
 
 AnimationFrame FrameStream::frameAt(double time) {
   if (!std::isfinite(time)) throw InputError("frame time: must be a finite number of seconds");
-  if (!dynamics_.enabled()) {
-    const int index = static_cast<int>(std::floor((time - timeline_.start()) * timeline_.fps() + 1e-9));
-    return solveFrame(index, time, false);
+  State& s = *state_;
+  if (!s.dynamics_.enabled()) {
+    const int index = static_cast<int>(std::floor((time - s.timeline_.start()) * s.timeline_.fps() + 1e-9));
+    return s.solveFrame(index, time, false);
   }
-  const double frames = std::floor((time - timeline_.start()) * timeline_.fps() + 1e-9);
+  const double frames = std::floor((time - s.timeline_.start()) * s.timeline_.fps() + 1e-9);
   const int index = static_cast<int>(std::clamp(frames, 0.0, static_cast<double>(frameCount() - 1)));
   restart();
   AnimationFrame frame;
-  while (next_ <= index) frame = next();
+  while (s.next_ <= index) frame = next();
   return frame;
 }
 
-AnimationFrame FrameStream::solveFrame(int index, double time, bool warm) {
+AnimationFrame FrameStream::State::solveFrame(int index, double time, bool warm) {
   const auto started = std::chrono::steady_clock::now();
   AnimationFrame frame;
   frame.index = index;
@@ -88,7 +129,7 @@ AnimationFrame FrameStream::solveFrame(int index, double time, bool warm) {
 
 // Eqs. 17-19 with the anchor, as one set of vertex springs: the minimizer of W_T + W_A alone is,
 // per vertex, the spring target y_v = (c_T x_p + c_A xbar) / (c_T + c_A).
-void FrameStream::addDynamics(AnimationFrame& frame) {
+void FrameStream::State::addDynamics(AnimationFrame& frame) {
   const Timeline::Position position = timeline_.locate(frame.time);
   const int segments = static_cast<int>(timeline_.segments().size());
   frame.blend = shown_ == 0 ? 0.0 : dynamicsBlend(dynamics_, position, segments, lastDeviation_);
@@ -120,7 +161,7 @@ void FrameStream::addDynamics(AnimationFrame& frame) {
   frame.deviation = deviation(frame.x, frame.plain);
 }
 
-double FrameStream::deviation(const Eigen::MatrixX2d& x, const Eigen::MatrixX2d& plain) const {
+double FrameStream::State::deviation(const Eigen::MatrixX2d& x, const Eigen::MatrixX2d& plain) const {
   double sum = 0;
   for (Eigen::Index v = 0; v < x.rows(); ++v) sum += mass_(v) * (x.row(v) - plain.row(v)).squaredNorm();
   return std::sqrt(sum) / shapeSize();

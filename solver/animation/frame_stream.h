@@ -10,11 +10,11 @@
 
 #include "animation/dynamics.h"
 #include "animation/timeline.h"
-#include "animation/warm_start.h"
 #include "interpolation/interpolator.h"
 
 #include <Eigen/Core>
-#include <optional>
+#include <memory>
+#include <vector>
 
 namespace ib {
 
@@ -40,8 +40,12 @@ class FrameStream {
   FrameStream(const Multimesh& mesh, const Timeline& timeline, const InterpolationParams& params,
               const SolverOptions& options, const DynamicsParams& dynamics);
 
-  int frameCount() const { return timeline_.frameCount(); }
-  bool done() const { return next_ >= frameCount(); }
+  ~FrameStream();
+  FrameStream(FrameStream&&) noexcept;
+  FrameStream& operator=(FrameStream&&) noexcept;
+
+  int frameCount() const;
+  bool done() const;
   // The next frame in order. Throws std::out_of_range when done().
   AnimationFrame next();
   // Back to frame 0, forgetting warm starts, solver history and dynamics state.
@@ -52,26 +56,13 @@ class FrameStream {
   // (returned with that frame's time). Leaves the stream positioned after the returned frame.
   AnimationFrame frameAt(double time);
 
-  const Timeline& timeline() const { return timeline_; }
-  const DynamicsParams& dynamics() const { return dynamics_; }
-  double shapeSize() const { return plain_.shapeSize(); }
+  const Timeline& timeline() const;
+  const DynamicsParams& dynamics() const;
+  double shapeSize() const;  // s = sqrt(mean key area), in the multimesh's units
 
  private:
-  AnimationFrame solveFrame(int index, double time, bool warm);
-  void addDynamics(AnimationFrame& frame);
-  double deviation(const Eigen::MatrixX2d& x, const Eigen::MatrixX2d& plain) const;
-
-  Timeline timeline_;
-  DynamicsParams dynamics_;
-  Interpolator plain_;
-  std::optional<Interpolator> dynamic_;  // with dynamics only: its own history and factorization
-  WarmStartPredictor predictor_;
-  Eigen::VectorXd mass_;    // m_v, summing to 1
-  Eigen::VectorXd anchor_;  // a_v in (0, 1]
-  int next_ = 0;
-  int shown_ = 0;                      // frames of the current run kept below (0, 1 or 2)
-  Eigen::MatrixX2d last_, beforeLast_;  // x(s-1), x(s-2)
-  double lastDeviation_ = 0;           // D(s-1)
+  struct State;  // frame_stream.cpp: the interpolators, warm starts and dynamics state
+  std::unique_ptr<State> state_;
 };
 
 }  // namespace ib

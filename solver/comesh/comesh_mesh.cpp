@@ -22,7 +22,7 @@ ComeshMesh::ComeshMesh(const Multimesh& mesh, const ComeshBoundary* boundary)
   u = Eigen::MatrixXd::Zero(n, m);
   fixed.assign(n, 0);
   if (!boundary) {
-    for (auto v : mesh.topology().vertices()) fixed[v.idx()] = mesh.topology().is_boundary(v);
+    for (int v = 0; v < n; ++v) fixed[v] = mesh.onBoundary()[v];
     return;
   }
   arc = boundary->arc;

@@ -10,6 +10,7 @@
 // no force.
 #pragma once
 
+#include "interpolation/cohesive_params.h"
 #include "interpolation/deformation_energy.h"
 #include "multimesh/multimesh.h"
 
@@ -17,14 +18,6 @@
 #include <vector>
 
 namespace ib {
-
-// Cohesive parameters in normalized units (lengths divided by the shape size).
-struct CohesiveParams {
-  double lambda = 4000.0;  // cohesive stiffness lambda (eq. 10); paper default 4e3
-  double tau = 1e-3;       // clamp threshold tau (eq. 11), energy per pair; infinity never separates
-  double alpha = 0.5;      // shear/stretch control alpha in [0, 1] (eq. 13): the jump along the
-                           // edge costs (1 - alpha), across it alpha; larger alpha = easier shear
-};
 
 struct CohesiveTerm {
   int key = 0;

@@ -1,4 +1,4 @@
-#include "interpolation/interpolator.h"
+#include "interpolation/interpolator_impl.h"
 
 #include "core/error.h"
 
@@ -14,7 +14,7 @@ namespace {
 
 std::vector<std::pair<int, int>> meshEdges(const Multimesh& mesh) {
   std::vector<std::pair<int, int>> edges;
-  for (auto e : mesh.topology().edges()) edges.push_back({e.v0().idx(), e.v1().idx()});
+  for (const auto& [a, b] : mesh.edges()) edges.push_back({a, b});
   return edges;
 }
 
@@ -82,7 +82,7 @@ void validateWeights(const Eigen::VectorXd& w, int keyCount) {
     throw InputError("weights: sum to " + std::to_string(w.sum()) + ", must sum to 1");
 }
 
-double Interpolator::gradientNorm(const Eigen::MatrixX2d& g) const {
+double Interpolator::Impl::gradientNorm(const Eigen::MatrixX2d& g) const {
   const int blocks = vertexSplit_.threads();
   std::vector<double> partial(static_cast<size_t>(blocks), 0.0);
   const double* gx = g.col(0).data();
@@ -98,7 +98,7 @@ double Interpolator::gradientNorm(const Eigen::MatrixX2d& g) const {
   return *std::max_element(partial.begin(), partial.end());
 }
 
-struct Interpolator::Frame {
+struct Interpolator::Impl::Frame {
   Eigen::VectorXd w;
   Eigen::VectorXd springs;         // c_v (empty: no springs)
   Eigen::MatrixX2d springTarget;   // y_v, normalized
@@ -107,7 +107,7 @@ struct Interpolator::Frame {
   std::vector<int> participants;  // W_O boundary vertices
 };
 
-struct Interpolator::State {
+struct Interpolator::Impl::State {
   Eigen::MatrixX2d x, gradient;
   double energy = 0;                          // W_I + E_P
   double placement = 0;                       // E_P alone
@@ -115,11 +115,11 @@ struct Interpolator::State {
   std::vector<std::pair<int, int>> contacts;  // W_O offenders
 };
 
-Interpolator::Interpolator(const Multimesh& mesh, const InterpolationParams& params, const SolverOptions& options)
-    : Interpolator(threadLayout(validated(mesh), threadsFor(validOptions(params, options).threads, mesh.vertexCount())),
+Interpolator::Impl::Impl(const Multimesh& mesh, const InterpolationParams& params, const SolverOptions& options)
+    : Impl(threadLayout(validated(mesh), threadsFor(validOptions(params, options).threads, mesh.vertexCount())),
                    params, options) {}
 
-Interpolator::Interpolator(ThreadLayout layout, const InterpolationParams& params, const SolverOptions& options)
+Interpolator::Impl::Impl(ThreadLayout layout, const InterpolationParams& params, const SolverOptions& options)
     : params_(params),
       options_(options),
       originalOf_(std::move(layout.originalOf)),
@@ -161,7 +161,7 @@ Interpolator::Interpolator(ThreadLayout layout, const InterpolationParams& param
   global_ = std::make_unique<GlobalMatrix>(sources, mesh.vertexCount(), std::move(layout.partStart), vertexSplit_.threads());
 }
 
-Interpolator::Frame Interpolator::makeFrame(const Eigen::VectorXd& w, const VertexSprings* springs) const {
+Interpolator::Impl::Frame Interpolator::Impl::makeFrame(const Eigen::VectorXd& w, const VertexSprings* springs) const {
   validateWeights(w, keyCount());
   Frame f;
   f.w = w;
@@ -184,7 +184,7 @@ Interpolator::Frame Interpolator::makeFrame(const Eigen::VectorXd& w, const Vert
   return f;
 }
 
-void Interpolator::evaluateState(const Frame& frame, State& s) const {
+void Interpolator::Impl::evaluateState(const Frame& frame, State& s) const {
   const int n = vertexCount();
   s.gradient.resize(n, 2);
   // E_P first: it also initializes the gradient. Each thread sums its own vertices; the sums
@@ -219,14 +219,14 @@ void Interpolator::evaluateState(const Frame& frame, State& s) const {
   if (params_.nonOverlap) s.energy += nonOverlap_->evaluate(s.x, frame.participants, s.gradient, s.contacts);
 }
 
-void Interpolator::evaluateLinks(const Frame& frame, State& s) const {
+void Interpolator::Impl::evaluateLinks(const Frame& frame, State& s) const {
   Eigen::MatrixX2d scratch = Eigen::MatrixX2d::Zero(vertexCount(), 2);
   cohesive_->evaluate(s.x, frame.w, scratch, s.active);
   s.contacts.clear();
   if (params_.nonOverlap) nonOverlap_->evaluate(s.x, frame.participants, scratch, s.contacts);
 }
 
-void Interpolator::align(const Frame& frame, const State& reference, Eigen::MatrixX2d& x) {
+void Interpolator::Impl::align(const Frame& frame, const State& reference, Eigen::MatrixX2d& x) {
   std::vector<std::pair<int, int>> links = reference.contacts;
   const auto& terms = cohesive_->terms();
   for (size_t j = 0; j < terms.size(); ++j)
@@ -241,12 +241,12 @@ void Interpolator::align(const Frame& frame, const State& reference, Eigen::Matr
   alignGroups(x, frame.blend, groups_, vertexSplit_);
 }
 
-void Interpolator::forgetHistory() {
+void Interpolator::Impl::forgetHistory() {
   anderson_.reset();
   global_->invalidate();
 }
 
-EnergyEvaluation Interpolator::evaluate(const Eigen::MatrixX2d& x, const Eigen::VectorXd& w) const {
+EnergyEvaluation Interpolator::Impl::evaluate(const Eigen::MatrixX2d& x, const Eigen::VectorXd& w) const {
   if (x.rows() != vertexCount()) throw InputError("positions: expected " + std::to_string(vertexCount()) + " rows");
   const Frame frame = makeFrame(w, nullptr);
   State s;
@@ -255,12 +255,12 @@ EnergyEvaluation Interpolator::evaluate(const Eigen::MatrixX2d& x, const Eigen::
   return {s.energy, fromLayout(s.gradient, originalOf_) / scale_};
 }
 
-int Interpolator::countOverlaps(const Eigen::MatrixX2d& x, const Eigen::VectorXd& w) const {
+int Interpolator::Impl::countOverlaps(const Eigen::MatrixX2d& x, const Eigen::VectorXd& w) const {
   if (x.rows() != vertexCount()) throw InputError("positions: expected " + std::to_string(vertexCount()) + " rows");
   return nonOverlap_->countInside(toLayout(x, originalOf_) / scale_, makeFrame(w, nullptr).participants);
 }
 
-Interpolator::Step Interpolator::step(const Frame& frame, const State& s, State& candidate, Eigen::MatrixX2d& plain,
+Interpolator::Impl::Step Interpolator::Impl::step(const Frame& frame, const State& s, State& candidate, Eigen::MatrixX2d& plain,
                                       InterpolationResult& result) {
   const double slack = 1e-12 * std::abs(result.startEnergy);  // rounding noise in E
   const auto tryCandidate = [&]() {
@@ -292,7 +292,7 @@ Interpolator::Step Interpolator::step(const Frame& frame, const State& s, State&
   return Step::kStalled;
 }
 
-InterpolationResult Interpolator::solve(const Eigen::VectorXd& w, const Eigen::MatrixX2d* warmStart,
+InterpolationResult Interpolator::Impl::solve(const Eigen::VectorXd& w, const Eigen::MatrixX2d* warmStart,
                                         const VertexSprings* springs) {
   const auto started = std::chrono::steady_clock::now();
   const Frame frame = makeFrame(w, springs);
@@ -368,5 +368,29 @@ InterpolationResult Interpolator::solve(const Eigen::VectorXd& w, const Eigen::M
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
   return result;
 }
+
+Interpolator::Interpolator(const Multimesh& mesh, const InterpolationParams& params, const SolverOptions& options)
+    : impl_(std::make_unique<Impl>(mesh, params, options)) {}
+Interpolator::~Interpolator() = default;
+Interpolator::Interpolator(Interpolator&&) noexcept = default;
+Interpolator& Interpolator::operator=(Interpolator&&) noexcept = default;
+
+InterpolationResult Interpolator::solve(const Eigen::VectorXd& w, const Eigen::MatrixX2d* warmStart,
+                                        const VertexSprings* springs) {
+  return impl_->solve(w, warmStart, springs);
+}
+void Interpolator::forgetHistory() { impl_->forgetHistory(); }
+EnergyEvaluation Interpolator::evaluate(const Eigen::MatrixX2d& x, const Eigen::VectorXd& w) const {
+  return impl_->evaluate(x, w);
+}
+int Interpolator::countOverlaps(const Eigen::MatrixX2d& x, const Eigen::VectorXd& w) const {
+  return impl_->countOverlaps(x, w);
+}
+double Interpolator::shapeSize() const { return impl_->shapeSize(); }
+double Interpolator::stiffnessScale() const { return impl_->stiffnessScale(); }
+int Interpolator::keyCount() const { return impl_->keyCount(); }
+int Interpolator::vertexCount() const { return impl_->vertexCount(); }
+int Interpolator::threads() const { return impl_->threads(); }
+long Interpolator::factorNonZeros() const { return impl_->factorNonZeros(); }
 
 }  // namespace ib

@@ -23,24 +23,18 @@
 //
 // Threads. Internally the vertices are numbered so that each thread owns one block of them in
 // every loop of an iteration (thread_layout.h); inputs and outputs use the multimesh's numbering.
+// The solver's state (energies, H and its factor, Anderson's history) is behind a pointer
+// (interpolator_impl.h): this header needs only Eigen and the multimesh.
 //
 // Units. Internally all lengths are divided by the shape size s = sqrt(mean key area), so
 // lambda, tau and energies mean the same at any drawing resolution. Inputs and outputs are in
 // the multimesh's own units.
 #pragma once
 
-#include "core/thread_block.h"
-#include "interpolation/cohesive_energy.h"
-#include "interpolation/deformation_energy.h"
-#include "interpolation/global_matrix.h"
-#include "interpolation/non_overlap.h"
-#include "interpolation/placement.h"
-#include "interpolation/thread_layout.h"
-#include "linalg/anderson.h"
+#include "interpolation/cohesive_params.h"
 #include "multimesh/multimesh.h"
 
 #include <Eigen/Core>
-#include <Eigen/Sparse>
 #include <memory>
 #include <vector>
 
@@ -115,6 +109,9 @@ class Interpolator {
  public:
   // Validates the multimesh and the parameters (InputError naming the field on failure).
   Interpolator(const Multimesh& mesh, const InterpolationParams& params, const SolverOptions& options);
+  ~Interpolator();
+  Interpolator(Interpolator&&) noexcept;
+  Interpolator& operator=(Interpolator&&) noexcept;
 
   // Solves for weights w (m x 1, convex). warmStart (n x 2, multimesh units) is the previous
   // frame; without it the solve starts from the linear blend sum_i w_i X_i. springs, when given,
@@ -135,65 +132,19 @@ class Interpolator {
   // counted whether or not W_O is enforced.
   int countOverlaps(const Eigen::MatrixX2d& x, const Eigen::VectorXd& w) const;
 
-  double shapeSize() const { return scale_; }
+  double shapeSize() const;  // s = sqrt(mean key area), in the multimesh's units
   // Mean diagonal entry of the ARAP matrix at uniform weights (normalized units): how stiff one
   // vertex is held by its triangles. Spring constants are stated relative to it.
-  double stiffnessScale() const { return stiffnessScale_; }
-  int keyCount() const { return static_cast<int>(keys_.size()); }
-  int vertexCount() const { return static_cast<int>(keys_.front().rows()); }
-  int threads() const { return vertexSplit_.threads(); }
-  long factorNonZeros() const { return global_->factor().factorNonZeros(); }
+  double stiffnessScale() const;
+  int keyCount() const;
+  int vertexCount() const;
+  int threads() const;         // threads the solve runs on
+  long factorNonZeros() const;  // non-zeros of H's Cholesky factor
+
+  class Impl;  // interpolator_impl.h: the solver's state, for the solver's own files
 
  private:
-  struct Frame;
-  struct State;
-  Interpolator(ThreadLayout layout, const InterpolationParams& params, const SolverOptions& options);
-  double gradientNorm(const Eigen::MatrixX2d& g) const;  // |g|_inf, over the vertex split
-  Frame makeFrame(const Eigen::VectorXd& w, const VertexSprings* springs) const;
-  void evaluateState(const Frame& frame, State& state) const;
-  // Only what placement groups need: active cohesive pairs and non-overlap contacts.
-  void evaluateLinks(const Frame& frame, State& state) const;
-  void align(const Frame& frame, const State& reference, Eigen::MatrixX2d& x);
-  // One safeguarded iteration from s: the Anderson candidate, else the plain step, else (if the
-  // active cohesive set changed) a refactorization to retry with, else a backtracked plain
-  // step. On kAccepted the new iterate is in candidate; plain is scratch.
-  enum class Step { kAccepted, kRefactorized, kStalled };
-  Step step(const Frame& frame, const State& s, State& candidate, Eigen::MatrixX2d& plain, InterpolationResult& result);
-  // H's factor for a frame's weights w (m x 1), vertex springs (n x 1 or empty) and active
-  // cohesive pairs (interpolator_factor.cpp); all counted and timed in result.
-  // Factorizes H, unless the factor still models the frame (ensureFactorization: only the pairs
-  // differing is followed as in followActive), or always (refactorize).
-  void ensureFactorization(const Eigen::VectorXd& w, const Eigen::VectorXd& springs, const std::vector<char>& active,
-                           InterpolationResult& result);
-  void refactorize(const Eigen::VectorXd& w, const Eigen::VectorXd& springs, const std::vector<char>& active,
-                   InterpolationResult& result);
-  // Brings the factor to changed active pairs: refactorized at w when w has moved by more than
-  // half of refactorDistance since H was built (a factor change due anyway catches up with the
-  // weights), else by rank-one updates (GlobalMatrix::updateActive) unless they would cost more
-  // than a factorization. Returns whether the factor changed.
-  bool followActive(const Eigen::VectorXd& w, const Eigen::VectorXd& springs, const std::vector<char>& active,
-                    InterpolationResult& result);
-  // The rank-one branch of followActive: false, nothing done, when too costly or turned off.
-  bool updateFactorization(const std::vector<char>& active, InterpolationResult& result);
-
-  InterpolationParams params_;
-  SolverOptions options_;
-  // Internally, vertices are numbered as threadLayout() numbers them (see thread_layout.h), and
-  // thread p works on the vertices [vertexSplit_.begin(p), vertexSplit_.end(p)) in every loop.
-  std::vector<int> originalOf_;            // internal vertex k is the caller's vertex originalOf_[k]
-  RowSplit vertexSplit_, triangleSplit_;
-  double scale_ = 1;                       // shape size s
-  std::vector<Eigen::MatrixX2d> keys_;     // X_i / s
-  double vertexWeight_ = 0;                // placement weight m_v = 1/n of every vertex (placement.h)
-  std::unique_ptr<DeformationEnergy> deformation_;
-  std::unique_ptr<CohesiveEnergy> cohesive_;
-  std::unique_ptr<NonOverlap> nonOverlap_;  // always built; used when params_.nonOverlap
-  PlacementGroups groups_;
-  std::vector<std::pair<int, int>> groupLinks_;  // the links groups_ was last built from
-  std::unique_ptr<GlobalMatrix> global_;   // H and its factor; built from the energies above
-  AndersonAcceleration anderson_;          // history kept across frames
-  double gradientFloor_ = 0;               // absolute |g|_inf below which a start is converged
-  double stiffnessScale_ = 0;              // see stiffnessScale()
+  std::unique_ptr<Impl> impl_;
 };
 
 // Checks interpolation weights: m entries, finite, non-negative, summing to 1 (within 1e-6).

@@ -1,6 +1,6 @@
 // When the interpolation solver factorizes H, and when it updates H's factor instead (see
 // interpolator.h and "When cohesive pairs engage or let go" in the README).
-#include "interpolation/interpolator.h"
+#include "interpolation/interpolator_impl.h"
 
 #include <chrono>
 
@@ -14,7 +14,7 @@ double millisecondsSince(std::chrono::steady_clock::time_point started) {
 
 }  // namespace
 
-void Interpolator::refactorize(const Eigen::VectorXd& w, const Eigen::VectorXd& springs,
+void Interpolator::Impl::refactorize(const Eigen::VectorXd& w, const Eigen::VectorXd& springs,
                                const std::vector<char>& active, InterpolationResult& result) {
   const auto started = std::chrono::steady_clock::now();
   global_->factorize({w, springs, active});
@@ -22,7 +22,7 @@ void Interpolator::refactorize(const Eigen::VectorXd& w, const Eigen::VectorXd& 
   result.factorMilliseconds += millisecondsSince(started);
 }
 
-bool Interpolator::updateFactorization(const std::vector<char>& active, InterpolationResult& result) {
+bool Interpolator::Impl::updateFactorization(const std::vector<char>& active, InterpolationResult& result) {
   // A rank-one update's multiply-add takes 4-10 times as long as a factorization's (measured on
   // grids of 1k, 10k and 100k unknowns: 2.8, 2.8 and 6.3 ns against 0.79, 0.53 and 0.63), so the
   // updates are taken while their multiply-adds stay under a tenth of a factorization's.
@@ -37,7 +37,7 @@ bool Interpolator::updateFactorization(const std::vector<char>& active, Interpol
   return true;
 }
 
-bool Interpolator::followActive(const Eigen::VectorXd& w, const Eigen::VectorXd& springs,
+bool Interpolator::Impl::followActive(const Eigen::VectorXd& w, const Eigen::VectorXd& springs,
                                 const std::vector<char>& active, InterpolationResult& result) {
   // The factor models the frame but for its pairs, with w within half of refactorDistance.
   if (global_->models({w, springs, global_->active()}, 0.5 * options_.refactorDistance))
@@ -46,7 +46,7 @@ bool Interpolator::followActive(const Eigen::VectorXd& w, const Eigen::VectorXd&
   return true;
 }
 
-void Interpolator::ensureFactorization(const Eigen::VectorXd& w, const Eigen::VectorXd& springs,
+void Interpolator::Impl::ensureFactorization(const Eigen::VectorXd& w, const Eigen::VectorXd& springs,
                                        const std::vector<char>& active, InterpolationResult& result) {
   if (global_->models({w, springs, active}, options_.refactorDistance)) return;
   if (!followActive(w, springs, active, result)) refactorize(w, springs, active, result);

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <set>
+#include <utility>
 
 namespace ib {
 
@@ -33,19 +35,16 @@ double segmentParameter(const Eigen::Vector2d& p, const Eigen::Vector2d& a, cons
 
 NonOverlap::NonOverlap(const Multimesh& mesh, double stiffness)
     : triangles_(mesh.triangles()), stiffness_(stiffness) {
-  const auto& topo = mesh.topology();
-  for (auto e : topo.edges())
-    if (e.is_boundary()) boundaryEdges_.push_back({e.v0().idx(), e.v1().idx()});
-  boundaryVertex_.assign(mesh.vertexCount(), 0);
-  for (auto v : topo.vertices()) boundaryVertex_[v.idx()] = v.is_boundary();
+  std::set<std::pair<int, int>> onBoundary;  // each boundary edge as its triangle runs along it
+  for (const auto& [from, to] : mesh.boundaryEdges()) onBoundary.insert({from, to});
+  for (const auto& [a, b] : mesh.edges())
+    if (onBoundary.count({a, b}) || onBoundary.count({b, a})) boundaryEdges_.push_back({a, b});
+  boundaryVertex_.assign(mesh.onBoundary().begin(), mesh.onBoundary().end());
   boundaryEdge_.resize(triangles_.size());
-  for (auto f : topo.faces()) {
-    const Triangle& tri = triangles_[f.idx()];
-    for (auto h : f.halfedges()) {
-      const int from = h.from().idx(), to = h.to().idx();
-      for (int c = 0; c < 3; ++c)  // the edge opposite corner c joins the other two corners
-        if (tri[c] != from && tri[c] != to) boundaryEdge_[f.idx()][c] = h.opp().is_boundary();
-    }
+  for (size_t t = 0; t < triangles_.size(); ++t) {
+    const Triangle& tri = triangles_[t];
+    for (int c = 0; c < 3; ++c)  // the edge opposite corner c runs from corner c + 1 to c + 2
+      boundaryEdge_[t][c] = onBoundary.count({tri[(c + 1) % 3], tri[(c + 2) % 3]}) > 0;
   }
   partners_.resize(mesh.vertexCount());
   for (int i = 0; i < mesh.keyCount(); ++i) {

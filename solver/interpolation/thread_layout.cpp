@@ -18,7 +18,7 @@ Eigen::SparseMatrix<double> patternOfH(const Multimesh& mesh) {
   const auto couple = [&](int a, int b) {
     if (a != b) entries.emplace_back(std::max(a, b), std::min(a, b), -1.0);
   };
-  for (auto e : mesh.topology().edges()) couple(e.v0().idx(), e.v1().idx());
+  for (const auto& [a, b] : mesh.edges()) couple(a, b);
   for (int i = 0; i < mesh.keyCount(); ++i)
     for (const CohesivePair& p : mesh.cohesivePairs(i)) {
       const int v[4] = {p.a, p.b, p.c, p.d};

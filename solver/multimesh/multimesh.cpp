@@ -2,6 +2,8 @@
 
 #include "core/error.h"
 
+#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+
 #include <cmath>
 #include <set>
 #include <stdexcept>
@@ -60,10 +62,14 @@ Multimesh renumbered(const Multimesh& mesh, const std::vector<int>& vertexOrder)
   return out;
 }
 
-Multimesh::Multimesh(int vertexCount, const std::vector<Triangle>& triangles) {
+Multimesh::Multimesh(int vertexCount, const std::vector<Triangle>& triangles)
+    : vertexCount_(vertexCount), triangles_(triangles), kappa_(triangles.size(), 1.0) {
   if (vertexCount < 3) throw InputError("multimesh: needs at least 3 vertices, got " + std::to_string(vertexCount));
   if (triangles.empty()) throw InputError("multimesh: has no triangles");
-  for (int v = 0; v < vertexCount; ++v) mesh_.add_vertex(TopologyMesh::Point(0, 0, 0));
+  // OpenMesh checks that the triangles make a manifold, consistently oriented surface, and
+  // numbers the edges; nothing of it is kept but the derived lists.
+  OpenMesh::TriMesh_ArrayKernelT<> mesh;
+  for (int v = 0; v < vertexCount; ++v) mesh.add_vertex(OpenMesh::TriMesh_ArrayKernelT<>::Point(0, 0, 0));
   for (size_t t = 0; t < triangles.size(); ++t) {
     const Triangle& tri = triangles[t];
     for (int v : tri) {
@@ -73,80 +79,67 @@ Multimesh::Multimesh(int vertexCount, const std::vector<Triangle>& triangles) {
     }
     if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2])
       throw InputError("multimesh: triangle " + std::to_string(t) + " repeats a vertex");
-    const auto face = mesh_.add_face(mesh_.vertex_handle(tri[0]), mesh_.vertex_handle(tri[1]),
-                                     mesh_.vertex_handle(tri[2]));
+    const auto face = mesh.add_face(mesh.vertex_handle(tri[0]), mesh.vertex_handle(tri[1]),
+                                    mesh.vertex_handle(tri[2]));
     if (!face.is_valid())
       throw InputError("multimesh: triangle " + std::to_string(t) +
                        " makes the topology non-manifold or is inconsistently oriented");
   }
-  mesh_.add_property(kappa_, "kappa");
-  for (auto f : mesh_.faces()) mesh_.property(kappa_, f) = 1.0;
+  edges_.reserve(mesh.n_edges());
+  for (auto e : mesh.edges()) edges_.push_back({e.v0().idx(), e.v1().idx()});
+  onBoundary_.assign(vertexCount, 0);
+  for (auto v : mesh.vertices()) onBoundary_[v.idx()] = v.is_boundary();
+  for (auto h : mesh.halfedges())
+    if (h.is_boundary()) boundaryEdges_.push_back({h.to().idx(), h.from().idx()});  // the triangle's halfedge
 }
 
-std::vector<Triangle> Multimesh::triangles() const {
-  std::vector<Triangle> out;
-  out.reserve(mesh_.n_faces());
-  for (auto f : mesh_.faces()) {
-    Triangle tri{};
-    int k = 0;
-    for (auto v : mesh_.fv_range(f)) tri[k++] = v.idx();
-    out.push_back(tri);
+std::vector<std::vector<int>> Multimesh::boundaryLoops() const {
+  std::vector<int> next(vertexCount_, -1);
+  for (const Edge& e : boundaryEdges_) next[e[0]] = e[1];  // manifold: one boundary edge leaves a vertex
+  std::vector<char> seen(vertexCount_, 0);
+  std::vector<std::vector<int>> loops;
+  for (const Edge& e : boundaryEdges_) {
+    if (seen[e[0]]) continue;
+    std::vector<int> loop;
+    for (int v = e[0]; v >= 0 && !seen[v]; v = next[v]) {
+      seen[v] = 1;
+      loop.push_back(v);
+    }
+    loops.push_back(std::move(loop));
   }
-  return out;
+  return loops;
 }
 
 int Multimesh::addKey(const Eigen::MatrixX2d& positions, std::vector<CohesivePair> cohesive,
                       std::vector<int> boundary) {
   const int key = keyCount();
   if (positions.rows() != vertexCount())
-    throw InputError("multimesh: " + keyName(key) + " has " + std::to_string(positions.rows()) +
-                     " positions for " + std::to_string(vertexCount()) + " vertices");
-  Key k;
-  mesh_.add_property(k.position, "X_" + std::to_string(key));
-  k.cohesive = std::move(cohesive);
-  k.boundary = std::move(boundary);
-  keys_.push_back(std::move(k));
-  setKeyPositions(key, positions);
+    throw std::invalid_argument("multimesh: " + keyName(key) + " has " + std::to_string(positions.rows()) +
+                                " positions for " + std::to_string(vertexCount()) + " vertices");
+  keys_.push_back({positions, std::move(cohesive), std::move(boundary)});
   return key;
-}
-
-Eigen::MatrixX2d Multimesh::keyPositions(int key) const {
-  const auto& prop = keys_.at(key).position;
-  Eigen::MatrixX2d out(vertexCount(), 2);
-  for (auto v : mesh_.vertices()) {
-    const auto& p = mesh_.property(prop, v);
-    out(v.idx(), 0) = p[0];
-    out(v.idx(), 1) = p[1];
-  }
-  return out;
 }
 
 void Multimesh::setKeyPositions(int key, const Eigen::MatrixX2d& positions) {
   if (positions.rows() != vertexCount())
-    throw InputError("multimesh: " + keyName(key) + " positions have the wrong size");
-  const auto& prop = keys_.at(key).position;
-  for (auto v : mesh_.vertices())
-    mesh_.property(prop, v) = OpenMesh::Vec2d(positions(v.idx(), 0), positions(v.idx(), 1));
+    throw std::invalid_argument("multimesh: " + keyName(key) + " positions have the wrong size");
+  keys_.at(key).positions = positions;
 }
-
-double Multimesh::stiffness(int triangle) const { return mesh_.property(kappa_, mesh_.face_handle(triangle)); }
 
 void Multimesh::setStiffness(int triangle, double kappa) {
   if (triangle < 0 || triangle >= triangleCount())
-    throw InputError("multimesh: stiffness for triangle " + std::to_string(triangle) + " out of range");
-  mesh_.property(kappa_, mesh_.face_handle(triangle)) = kappa;
+    throw std::invalid_argument("multimesh: stiffness for triangle " + std::to_string(triangle) + " out of range");
+  kappa_[triangle] = kappa;
 }
 
 Eigen::VectorXd Multimesh::stiffnesses() const {
-  Eigen::VectorXd out(triangleCount());
-  for (auto f : mesh_.faces()) out(f.idx()) = mesh_.property(kappa_, f);
-  return out;
+  return Eigen::Map<const Eigen::VectorXd>(kappa_.data(), triangleCount());
 }
 
 void Multimesh::validate() const {
   if (keyCount() < 1) throw InputError("multimesh: has no keys (m = 0)");
   const int n = vertexCount();
-  const std::vector<Triangle> tris = triangles();
+  const std::vector<Triangle>& tris = triangles_;
   for (int t = 0; t < triangleCount(); ++t) {
     const double kappa = stiffness(t);
     if (!std::isfinite(kappa) || kappa <= 0)
@@ -154,12 +147,9 @@ void Multimesh::validate() const {
                        std::to_string(kappa) + " (must be positive)");
   }
   std::set<std::pair<int, int>> edges;
-  for (auto e : mesh_.edges()) {
-    const int a = e.v0().idx(), b = e.v1().idx();
-    edges.insert({std::min(a, b), std::max(a, b)});
-  }
+  for (const auto& [a, b] : edges_) edges.insert({std::min(a, b), std::max(a, b)});
   for (int key = 0; key < keyCount(); ++key) {
-    const Eigen::MatrixX2d X = keyPositions(key);
+    const Eigen::MatrixX2d& X = keys_[key].positions;
     if (!X.allFinite()) throw InputError("multimesh: " + keyName(key) + " has a non-finite position");
     const double size = boundingDiagonal(X);
     if (!(size > 0)) throw InputError("multimesh: " + keyName(key) + " has zero size");

@@ -2,13 +2,14 @@
 // for every key shape i in [0, m): vertex positions X_i (n x 2), cohesive edge pairs C_i and the
 // boundary vertex set B_i; plus a stiffness kappa per triangle.
 //
-// Conventions: vertex and triangle indices are OpenMesh's (0..n-1, 0..t-1). Every triangle
-// has positive signed area (x1-x0) x (x2-x0) in every key, in the units the positions are
-// given in (drawing pixels for scenes; any unit for meshes built in code).
+// Conventions: vertices and triangles are numbered 0..n-1 and 0..t-1 in the order they were given.
+// Every triangle has positive signed area (x1-x0) x (x2-x0) in every key, in the units the
+// positions are given in (drawing pixels for scenes; any unit for meshes built in code). The
+// topology never changes after construction: its edges and boundary are derived once (with
+// OpenMesh, which checks that it is manifold), and the header shows none of OpenMesh.
 #pragma once
 
 #include <Eigen/Core>
-#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 #include <array>
 #include <string>
 #include <vector>
@@ -21,35 +22,45 @@ struct CohesivePair {
   int a = 0, b = 0, c = 0, d = 0;
 };
 
-using TopologyMesh = OpenMesh::TriMesh_ArrayKernelT<>;
 using Triangle = std::array<int, 3>;
+using Edge = std::array<int, 2>;
 
 class Multimesh {
  public:
   // Shared topology from a triangle list over vertices 0..vertexCount-1. Throws InputError on
-  // out-of-range or repeated indices and on faces OpenMesh rejects as non-manifold.
+  // out-of-range or repeated indices and on faces that make it non-manifold or inconsistently
+  // oriented (a multimesh file can hold any of these).
   Multimesh(int vertexCount, const std::vector<Triangle>& triangles);
 
-  int vertexCount() const { return static_cast<int>(mesh_.n_vertices()); }
-  int triangleCount() const { return static_cast<int>(mesh_.n_faces()); }
+  int vertexCount() const { return vertexCount_; }
+  int triangleCount() const { return static_cast<int>(triangles_.size()); }
   int keyCount() const { return static_cast<int>(keys_.size()); }
 
-  // Triangles as vertex index triples, in face order (t x 3).
-  std::vector<Triangle> triangles() const;
-  const TopologyMesh& topology() const { return mesh_; }
+  // Triangles as vertex index triples (t x 3), in the order given.
+  const std::vector<Triangle>& triangles() const { return triangles_; }
+  // Every edge of the topology once, {v0, v1}.
+  const std::vector<Edge>& edges() const { return edges_; }
+  // The edges with one triangle, each {from, to} as that triangle runs along it: with triangles
+  // of positive area, the shape lies to the left of each.
+  const std::vector<Edge>& boundaryEdges() const { return boundaryEdges_; }
+  // [vertex]: 1 where the vertex lies on the topology's boundary (the shape's outline and every
+  // side of every cut), else 0. B_i, the boundary set of a key, is boundaryVertices(i).
+  const std::vector<char>& onBoundary() const { return onBoundary_; }
+  // The boundary as closed loops of vertices, each in boundaryEdges' direction.
+  std::vector<std::vector<int>> boundaryLoops() const;
 
   // Appends key i = keyCount(): positions X_i (n x 2), cohesive pairs C_i, boundary set B_i.
-  // Sizes are checked here; geometry is checked by validate().
+  // Sizes are checked here (std::invalid_argument); geometry is checked by validate().
   int addKey(const Eigen::MatrixX2d& positions, std::vector<CohesivePair> cohesive,
              std::vector<int> boundary);
 
-  Eigen::MatrixX2d keyPositions(int key) const;            // X_i, n x 2
+  const Eigen::MatrixX2d& keyPositions(int key) const { return keys_.at(key).positions; }  // X_i, n x 2
   void setKeyPositions(int key, const Eigen::MatrixX2d& positions);
   const std::vector<CohesivePair>& cohesivePairs(int key) const { return keys_.at(key).cohesive; }
   const std::vector<int>& boundaryVertices(int key) const { return keys_.at(key).boundary; }
 
   // Per-triangle stiffness kappa_k (eq. 16), default 1.
-  double stiffness(int triangle) const;
+  double stiffness(int triangle) const { return kappa_.at(triangle); }
   void setStiffness(int triangle, double kappa);
   Eigen::VectorXd stiffnesses() const;  // t x 1
 
@@ -61,12 +72,15 @@ class Multimesh {
 
  private:
   struct Key {
-    OpenMesh::VPropHandleT<OpenMesh::Vec2d> position;
+    Eigen::MatrixX2d positions;  // n x 2
     std::vector<CohesivePair> cohesive;
     std::vector<int> boundary;
   };
-  TopologyMesh mesh_;
-  OpenMesh::FPropHandleT<double> kappa_;
+  int vertexCount_ = 0;
+  std::vector<Triangle> triangles_;
+  std::vector<Edge> edges_, boundaryEdges_;
+  std::vector<char> onBoundary_;
+  std::vector<double> kappa_;  // [triangle]
   std::vector<Key> keys_;
 };
 

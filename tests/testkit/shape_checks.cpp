@@ -26,17 +26,13 @@ double distanceToShape(const ib::KeyShape& shape, const Eigen::Vector2d& p) {
 
 std::vector<int> meshBoundary(const ib::Multimesh& mesh) {
   std::vector<int> out;
-  for (auto v : mesh.topology().vertices())
-    if (mesh.topology().is_boundary(v)) out.push_back(v.idx());
+  for (int v = 0; v < mesh.vertexCount(); ++v)
+    if (mesh.onBoundary()[v]) out.push_back(v);
   return out;
 }
 
 std::vector<std::array<int, 2>> boundaryEdges(const ib::Multimesh& mesh) {
-  std::vector<std::array<int, 2>> out;
-  const ib::TopologyMesh& t = mesh.topology();
-  for (auto h : t.halfedges())
-    if (t.is_boundary(h)) out.push_back({t.from_vertex_handle(h).idx(), t.to_vertex_handle(h).idx()});
-  return out;
+  return mesh.boundaryEdges();
 }
 
 double distanceToBoundary(const std::vector<std::array<int, 2>>& edges, const Eigen::MatrixX2d& x,

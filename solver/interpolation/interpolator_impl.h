@@ -1,0 +1,94 @@
+// The interpolation solver's state and steps, behind Interpolator's pointer (interpolator.h
+// says what they compute). For the solver's own files: interpolator.cpp (the iteration) and
+// interpolator_factor.cpp (when H is refactorized or updated).
+#pragma once
+
+#include "core/thread_block.h"
+#include "interpolation/cohesive_energy.h"
+#include "interpolation/deformation_energy.h"
+#include "interpolation/global_matrix.h"
+#include "interpolation/interpolator.h"
+#include "interpolation/non_overlap.h"
+#include "interpolation/placement.h"
+#include "interpolation/thread_layout.h"
+#include "linalg/anderson.h"
+
+#include <Eigen/Core>
+#include <memory>
+#include <utility>
+#include <vector>
+
+namespace ib {
+
+class Interpolator::Impl {
+ public:
+  Impl(const Multimesh& mesh, const InterpolationParams& params, const SolverOptions& options);
+
+  InterpolationResult solve(const Eigen::VectorXd& w, const Eigen::MatrixX2d* warmStart, const VertexSprings* springs);
+
+  void forgetHistory();
+
+  EnergyEvaluation evaluate(const Eigen::MatrixX2d& x, const Eigen::VectorXd& w) const;
+
+  int countOverlaps(const Eigen::MatrixX2d& x, const Eigen::VectorXd& w) const;
+
+  double shapeSize() const { return scale_; }
+  double stiffnessScale() const { return stiffnessScale_; }
+  int keyCount() const { return static_cast<int>(keys_.size()); }
+  int vertexCount() const { return static_cast<int>(keys_.front().rows()); }
+  int threads() const { return vertexSplit_.threads(); }
+  long factorNonZeros() const { return global_->factor().factorNonZeros(); }
+
+ private:
+  struct Frame;
+  struct State;
+  Impl(ThreadLayout layout, const InterpolationParams& params, const SolverOptions& options);
+  double gradientNorm(const Eigen::MatrixX2d& g) const;  // |g|_inf, over the vertex split
+  Frame makeFrame(const Eigen::VectorXd& w, const VertexSprings* springs) const;
+  void evaluateState(const Frame& frame, State& state) const;
+  // Only what placement groups need: active cohesive pairs and non-overlap contacts.
+  void evaluateLinks(const Frame& frame, State& state) const;
+  void align(const Frame& frame, const State& reference, Eigen::MatrixX2d& x);
+  // One safeguarded iteration from s: the Anderson candidate, else the plain step, else (if the
+  // active cohesive set changed) a refactorization to retry with, else a backtracked plain
+  // step. On kAccepted the new iterate is in candidate; plain is scratch.
+  enum class Step { kAccepted, kRefactorized, kStalled };
+  Step step(const Frame& frame, const State& s, State& candidate, Eigen::MatrixX2d& plain, InterpolationResult& result);
+  // H's factor for a frame's weights w (m x 1), vertex springs (n x 1 or empty) and active
+  // cohesive pairs (interpolator_factor.cpp); all counted and timed in result.
+  // Factorizes H, unless the factor still models the frame (ensureFactorization: only the pairs
+  // differing is followed as in followActive), or always (refactorize).
+  void ensureFactorization(const Eigen::VectorXd& w, const Eigen::VectorXd& springs, const std::vector<char>& active,
+                           InterpolationResult& result);
+  void refactorize(const Eigen::VectorXd& w, const Eigen::VectorXd& springs, const std::vector<char>& active,
+                   InterpolationResult& result);
+  // Brings the factor to changed active pairs: refactorized at w when w has moved by more than
+  // half of refactorDistance since H was built (a factor change due anyway catches up with the
+  // weights), else by rank-one updates (GlobalMatrix::updateActive) unless they would cost more
+  // than a factorization. Returns whether the factor changed.
+  bool followActive(const Eigen::VectorXd& w, const Eigen::VectorXd& springs, const std::vector<char>& active,
+                    InterpolationResult& result);
+  // The rank-one branch of followActive: false, nothing done, when too costly or turned off.
+  bool updateFactorization(const std::vector<char>& active, InterpolationResult& result);
+
+  InterpolationParams params_;
+  SolverOptions options_;
+  // Internally, vertices are numbered as threadLayout() numbers them (see thread_layout.h), and
+  // thread p works on the vertices [vertexSplit_.begin(p), vertexSplit_.end(p)) in every loop.
+  std::vector<int> originalOf_;            // internal vertex k is the caller's vertex originalOf_[k]
+  RowSplit vertexSplit_, triangleSplit_;
+  double scale_ = 1;                       // shape size s
+  std::vector<Eigen::MatrixX2d> keys_;     // X_i / s
+  double vertexWeight_ = 0;                // placement weight m_v = 1/n of every vertex (placement.h)
+  std::unique_ptr<DeformationEnergy> deformation_;
+  std::unique_ptr<CohesiveEnergy> cohesive_;
+  std::unique_ptr<NonOverlap> nonOverlap_;  // always built; used when params_.nonOverlap
+  PlacementGroups groups_;
+  std::vector<std::pair<int, int>> groupLinks_;  // the links groups_ was last built from
+  std::unique_ptr<GlobalMatrix> global_;   // H and its factor; built from the energies above
+  AndersonAcceleration anderson_;          // history kept across frames
+  double gradientFloor_ = 0;               // absolute |g|_inf below which a start is converged
+  double stiffnessScale_ = 0;              // see stiffnessScale()
+};
+
+}  // namespace ib
