@@ -3,6 +3,7 @@
 #include "testkit/fixtures.h"
 
 #include <catch2/catch.hpp>
+#include <stdexcept>
 #include <cmath>
 
 using namespace ib;
@@ -153,13 +154,13 @@ TEST_CASE("dynamics: a frame at a given time is the streamed frame, exactly with
   CHECK_THROWS_AS(plain.next(), std::out_of_range);
 }
 
-TEST_CASE("dynamics: out-of-range parameters and a timeline for other keys are input errors naming the field") {
+TEST_CASE("dynamics: out-of-range parameters are input errors naming the field; a timeline for other keys is the caller's error") {
   const auto f = test::strip(100, 2);
   const Timeline t = keyTimeline({{0, 0}, {1, 1}}, 2, "linear");
   const auto message = [&](DynamicsParams d, const Timeline& timeline) -> std::string {
     try {
       FrameStream(f.mesh, timeline, {}, {}, d);
-    } catch (const InputError& e) {
+    } catch (const std::exception& e) {
       return e.what();
     }
     return "no error";
@@ -173,7 +174,9 @@ TEST_CASE("dynamics: out-of-range parameters and a timeline for other keys are i
   d = {};
   d.gravity = {NAN, 0};
   CHECK_THAT(message(d, t), Catch::Contains("dynamics: gravity"));
+  CHECK_THROWS_AS(FrameStream(f.mesh, t, {}, {}, d), InputError);
   CHECK_THAT(message({}, keyTimeline({{0, 0}, {1, 2}}, 3, "linear")), Catch::Contains("timeline: has weights for 3 keys"));
+  CHECK_THROWS_AS(FrameStream(f.mesh, keyTimeline({{0, 0}, {1, 2}}, 3, "linear"), {}, {}, {}), std::invalid_argument);
 }
 
 TEST_CASE("dynamics: vertex springs towards the plain inbetween leave it, springs towards a moved copy move it rigidly") {
@@ -194,7 +197,7 @@ TEST_CASE("dynamics: vertex springs towards the plain inbetween leave it, spring
   springs.target = plain.rowwise() + Eigen::RowVector2d(0.2 * f.size, -0.1 * f.size);
   const Eigen::MatrixX2d moved = solver.solve(w, &plain, &springs).x;
   CHECK((moved - springs.target).rowwise().norm().maxCoeff() < 1e-3 * f.size);
-  // Bad springs are input errors.
+  // Bad springs are the caller's error.
   springs.stiffness(0) = -1;
-  CHECK_THROWS_AS(solver.solve(w, nullptr, &springs), InputError);
+  CHECK_THROWS_AS(solver.solve(w, nullptr, &springs), std::invalid_argument);
 }

@@ -5,6 +5,7 @@
 
 #include <Eigen/Dense>
 #include <catch2/catch.hpp>
+#include <stdexcept>
 #include <cmath>
 #include <random>
 
@@ -167,7 +168,7 @@ TEST_CASE("interpolation: analytic gradients agree with central finite differenc
     }
 }
 
-TEST_CASE("interpolation: bad weights and wrong-sized positions are input errors, never NaN output") {
+TEST_CASE("interpolation: bad weights and wrong-sized positions are the caller's errors, never NaN output") {
   const auto f = ib::test::strip(100, 2);
   Interpolator solver(f.mesh, {}, SolverOptions{});
   REQUIRE_THROWS_WITH(solver.solve(Eigen::Vector3d(0.2, 0.3, 0.5)), Catch::Contains("expected 2 values"));
@@ -176,10 +177,10 @@ TEST_CASE("interpolation: bad weights and wrong-sized positions are input errors
   REQUIRE_THROWS_WITH(solver.solve(Eigen::Vector2d(0.5, 0.4)), Catch::Contains("sum to"));
   Eigen::MatrixX2d badStart = f.mesh.keyPositions(0);
   badStart(3, 0) = std::numeric_limits<double>::infinity();
-  REQUIRE_THROWS_AS(solver.solve(Eigen::Vector2d(0.5, 0.5), &badStart), InputError);
+  REQUIRE_THROWS_AS(solver.solve(Eigen::Vector2d(0.5, 0.5), &badStart), std::invalid_argument);
   const Eigen::MatrixX2d shortStart = f.mesh.keyPositions(0).topRows(10);
   REQUIRE_THROWS_WITH(solver.solve(Eigen::Vector2d(0.5, 0.5), &shortStart), Catch::Contains("warm start"));
-  REQUIRE_THROWS_AS(solver.evaluate(shortStart, Eigen::Vector2d(0.5, 0.5)), InputError);
+  REQUIRE_THROWS_AS(solver.evaluate(shortStart, Eigen::Vector2d(0.5, 0.5)), std::invalid_argument);
 }
 
 TEST_CASE("interpolation: out-of-range parameters name the parameter") {

@@ -4,6 +4,7 @@
 #include "vulkan_fixtures.h"
 
 #include <catch2/catch.hpp>
+#include <stdexcept>
 #include <cmath>
 
 using namespace ib;
@@ -139,20 +140,22 @@ TEST_CASE("renderer: pipelined frames come back in submission order") {
   CHECK(context.validationMessages().empty());
 }
 
-TEST_CASE("renderer: bad frames and options are input errors that leave the renderer usable") {
+TEST_CASE("renderer: bad options are input errors, bad frames the caller's errors, and both leave the renderer usable") {
   const vk::VulkanContext context = test::validatedContext();
   const Multimesh mesh = squareGrid(3, 0, 0, 8, 2);
   const RgbaImage art = paintedImage(8, 8, [](int, int) { return Colour{9, 9, 9, 255}; });
   const RenderMesh scene = renderMeshOf(mesh, {art, art});
-  CHECK_THROWS_AS(renderMeshOf(mesh, {art}), InputError);
+  CHECK_THROWS_AS(renderMeshOf(mesh, {art}), std::invalid_argument);
   OffscreenOptions bad;
   bad.width = 0;
   CHECK_THROWS_AS(OffscreenRenderer(context, scene, bad), InputError);
   OffscreenRenderer renderer(context, scene, OffscreenOptions{16, 16});
   const Eigen::MatrixX2d x = mesh.keyPositions(0);
-  CHECK_THROWS_AS(renderer.render(frameOf(x, Eigen::VectorXd::Ones(3), {0, 0, 8, 8})), InputError);
-  CHECK_THROWS_AS(renderer.render(frameOf(x, (Eigen::VectorXd(2) << -0.5, 1.5).finished(), {0, 0, 8, 8})), InputError);
-  CHECK_THROWS_AS(renderer.render(frameOf(x.topRows(3), (Eigen::VectorXd(2) << 0.5, 0.5).finished(), {0, 0, 8, 8})), InputError);
+  CHECK_THROWS_AS(renderer.render(frameOf(x, Eigen::VectorXd::Ones(3), {0, 0, 8, 8})), std::invalid_argument);
+  CHECK_THROWS_AS(renderer.render(frameOf(x, (Eigen::VectorXd(2) << -0.5, 1.5).finished(), {0, 0, 8, 8})),
+                  std::invalid_argument);
+  CHECK_THROWS_AS(renderer.render(frameOf(x.topRows(3), (Eigen::VectorXd(2) << 0.5, 0.5).finished(), {0, 0, 8, 8})),
+                  std::invalid_argument);
   const RgbaImage ok = renderer.render(frameOf(x, (Eigen::VectorXd(2) << 0.5, 0.5).finished(), {0, 0, 8, 8}));
   CHECK(pixel(ok, 8, 8)[3] == 255);
   CHECK(context.validationMessages().empty());

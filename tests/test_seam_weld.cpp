@@ -3,6 +3,7 @@
 #include "render_fixtures.h"
 
 #include <catch2/catch.hpp>
+#include <stdexcept>
 #include <cmath>
 
 using namespace ib;
@@ -55,8 +56,8 @@ TEST_CASE("seams: gaps under `glued` target pixels are welded, gaps of `open` or
     CHECK(w.closure[cut.left[3]] == Approx(std::clamp(1.5 - gap, 0.0, 1.0)).margin(1e-6));
     previous = shown;
   }
-  CHECK_THROWS_AS(weldSeams(glued, seams, 1.0, {1.0, 1.0}), InputError);
-  CHECK_THROWS_AS(weldSeams(glued, seams, 0.0, options), InputError);
+  CHECK_THROWS_AS(weldSeams(glued, seams, 1.0, {1.0, 1.0}), std::invalid_argument);
+  CHECK_THROWS_AS(weldSeams(glued, seams, 0.0, options), std::invalid_argument);
 }
 
 TEST_CASE("seams: a pair the solver says holds is welded shut at any gap; the others follow the pixel rule") {
@@ -87,7 +88,7 @@ TEST_CASE("seams: a pair the solver says holds is welded shut at any gap; the ot
     }
   }
   const std::vector<char> tooFew(7, 1);
-  CHECK_THROWS_AS(weldSeams(apart, seams, 1.0, {}, &tooFew), InputError);
+  CHECK_THROWS_AS(weldSeams(apart, seams, 1.0, {}, &tooFew), std::invalid_argument);
 }
 
 TEST_CASE("seams: the tip of a cut, its own partner, takes its pair's closure") {

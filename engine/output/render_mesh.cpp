@@ -1,11 +1,10 @@
 #include "output/render_mesh.h"
 
-#include "core/error.h"
-
 #include <algorithm>
 #include <cmath>
 #include <map>
 #include <set>
+#include <stdexcept>
 #include <string>
 
 namespace ib::render {
@@ -56,14 +55,14 @@ double closureAt(double gap, const SeamWeldOptions& options) {
 
 RenderMesh renderMeshOf(const Multimesh& mesh, std::vector<RgbaImage> artwork, std::vector<int> features) {
   if (static_cast<int>(artwork.size()) != mesh.keyCount())
-    throw InputError("render: " + std::to_string(artwork.size()) + " drawings for " + std::to_string(mesh.keyCount()) +
+    throw std::invalid_argument("render: " + std::to_string(artwork.size()) + " drawings for " + std::to_string(mesh.keyCount()) +
                      " keys");
   RenderMesh out;
   out.vertexCount = mesh.vertexCount();
   out.triangles = mesh.triangles();
   for (int k = 0; k < mesh.keyCount(); ++k) {
     const RgbaImage& image = artwork[k];
-    if (image.width <= 0 || image.height <= 0) throw InputError("render: the drawing of key " + std::to_string(k) + " is empty");
+    if (image.width <= 0 || image.height <= 0) throw std::invalid_argument("render: the drawing of key " + std::to_string(k) + " is empty");
     Eigen::MatrixX2f uv = mesh.keyPositions(k).cast<float>();
     uv.col(0) /= static_cast<float>(image.width);
     uv.col(1) /= static_cast<float>(image.height);
@@ -81,7 +80,7 @@ RenderMesh renderMeshOf(const Multimesh& mesh, std::vector<RgbaImage> artwork, s
     for (int e = 0; e < 3; ++e) edges.insert({std::min(t[e], t[(e + 1) % 3]), std::max(t[e], t[(e + 1) % 3])});
   out.edges.assign(edges.begin(), edges.end());
   for (int f : features)
-    if (f < 0 || f >= out.vertexCount) throw InputError("render: feature vertex " + std::to_string(f) + " is not in the mesh");
+    if (f < 0 || f >= out.vertexCount) throw std::invalid_argument("render: feature vertex " + std::to_string(f) + " is not in the mesh");
   out.features = std::move(features);
   out.artwork = std::move(artwork);
   return out;
@@ -90,13 +89,13 @@ RenderMesh renderMeshOf(const Multimesh& mesh, std::vector<RgbaImage> artwork, s
 SeamWeld weldSeams(const Eigen::MatrixX2d& x, const Seams& seams, double pixelsPerUnit, const SeamWeldOptions& options,
                    const std::vector<char>* holding) {
   if (!(options.glued >= 0 && options.open > options.glued))
-    throw InputError("render: seam welding needs 0 <= glued < open pixels");
-  if (!(pixelsPerUnit > 0 && std::isfinite(pixelsPerUnit))) throw InputError("render: seam welding needs a positive scale");
+    throw std::invalid_argument("render: seam welding needs 0 <= glued < open pixels");
+  if (!(pixelsPerUnit > 0 && std::isfinite(pixelsPerUnit))) throw std::invalid_argument("render: seam welding needs a positive scale");
   if (holding && holding->size() != seams.pairOfTerm.size())
-    throw InputError("render: " + std::to_string(holding->size()) + " holding flags for " +
+    throw std::invalid_argument("render: " + std::to_string(holding->size()) + " holding flags for " +
                      std::to_string(seams.pairOfTerm.size()) + " cohesive pairs");
   if (holding && seams.pairPartners.size() != seams.pairs.size())
-    throw InputError("render: holding flags need seams with pairPartners (renderMeshOf's)");
+    throw std::invalid_argument("render: holding flags need seams with pairPartners (renderMeshOf's)");
   const Eigen::Index n = x.rows();
   SeamWeld out{x, std::vector<float>(n, 0.0f)};
   if (seams.pairs.empty()) return out;
@@ -149,7 +148,7 @@ ViewBox boundsOf(const std::vector<Eigen::MatrixX2d>& points) {
     box.x1 = std::max(box.x1, p.col(0).maxCoeff());
     box.y1 = std::max(box.y1, p.col(1).maxCoeff());
   }
-  if (!(box.x0 <= box.x1)) throw InputError("render: nothing to frame (no positions)");
+  if (!(box.x0 <= box.x1)) throw std::invalid_argument("render: nothing to frame (no positions)");
   return box;
 }
 

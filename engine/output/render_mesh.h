@@ -37,8 +37,8 @@ struct RenderMesh {
 };
 
 // The render mesh of a multimesh whose key positions are in the pixels of `artwork[key]`.
-// `features` are vertex indices (may be empty). Throws InputError when the artwork count does not
-// match the keys or an image is empty.
+// `features` are vertex indices (may be empty). Throws std::invalid_argument when the artwork count
+// does not match the keys, an image is empty or a feature is not a vertex.
 RenderMesh renderMeshOf(const Multimesh& mesh, std::vector<RgbaImage> artwork, std::vector<int> features = {});
 
 // Where the solver glues a cut, its two sides lie within a small fraction of a pixel of each other,
@@ -72,8 +72,8 @@ struct SeamWeld {
 // mutual partners at its centroid, and a lone pair between the thresholds narrows continuously
 // to d (1 - c) / (1 + c), which still grows with d.
 // x (n x 2) is in drawing pixels, shown at `pixelsPerUnit` target pixels per drawing pixel (> 0).
-// Throws InputError unless 0 <= glued < open and holding, if given, has one flag per term (and
-// seams are renderMeshOf's, with pairOfTerm and pairPartners).
+// Throws std::invalid_argument unless 0 <= glued < open and holding, if given, has one flag per
+// term (and seams are renderMeshOf's, with pairOfTerm and pairPartners).
 SeamWeld weldSeams(const Eigen::MatrixX2d& x, const Seams& seams, double pixelsPerUnit,
                    const SeamWeldOptions& options = {}, const std::vector<char>* holding = nullptr);
 
@@ -86,7 +86,7 @@ struct ViewBox {
 // heightened about its centre to the target's aspect ratio, so shapes are not distorted.
 ViewBox fitView(const ViewBox& bounds, int width, int height, double margin = 0.05);
 
-// Bounding box of point sets (n x 2 each); throws InputError when all are empty.
+// Bounding box of point sets (n x 2 each); throws std::invalid_argument when all are empty.
 ViewBox boundsOf(const std::vector<Eigen::MatrixX2d>& points);
 
 // A neighbouring frame drawn faded behind the current one (onion skin).

@@ -1,12 +1,12 @@
 #include "renderers/mesh_renderer.h"
 
-#include "core/error.h"
 #include "gpu/vulkan_check.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <numeric>
+#include <stdexcept>
 #include <string>
 
 namespace ib::render {
@@ -56,7 +56,7 @@ MeshRenderer::MeshRenderer(const vk::VulkanContext& context, VkCommandPool pool,
       cohesiveEdges_(mesh.cohesiveEdges),
       seams_(mesh.seams),
       features_(mesh.features) {
-  if (keyCount_ == 0 || vertexCount_ == 0 || mesh.triangles.empty()) throw InputError("render: the mesh is empty");
+  if (keyCount_ == 0 || vertexCount_ == 0 || mesh.triangles.empty()) throw std::invalid_argument("render: the mesh is empty");
   VkDevice device = context.device();
   pipelines_ = vk::createRendererPipelines(device, pass, samples);
   artwork_ = vk::uploadArtwork(context, pool, mesh.artwork);
@@ -110,11 +110,11 @@ MeshRenderer::MeshRenderer(const vk::VulkanContext& context, VkCommandPool pool,
 
 MeshRenderer::Active MeshRenderer::activeKeys(const Eigen::VectorXd& weights) const {
   if (weights.size() != keyCount_)
-    throw InputError("render: " + std::to_string(weights.size()) + " weights for " + std::to_string(keyCount_) + " keys");
+    throw std::invalid_argument("render: " + std::to_string(weights.size()) + " weights for " + std::to_string(keyCount_) + " keys");
   std::vector<int> order;
   for (int k = 0; k < keyCount_; ++k) {
     if (!std::isfinite(weights[k]) || weights[k] < 0)
-      throw InputError("render: weight " + std::to_string(k) + " is negative or not finite");
+      throw std::invalid_argument("render: weight " + std::to_string(k) + " is negative or not finite");
     if (weights[k] > 0) order.push_back(k);
   }
   std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return weights[a] > weights[b]; });
@@ -133,8 +133,8 @@ void MeshRenderer::drawArtwork(VkCommandBuffer cmd, const float view[4], double 
                                const Eigen::VectorXd& weights, const std::vector<char>* holding, const float tint[4],
                                int slot, VkDeviceSize& offset) {
   if (x.rows() != vertexCount_)
-    throw InputError("render: " + std::to_string(x.rows()) + " positions for " + std::to_string(vertexCount_) + " vertices");
-  if (!x.allFinite()) throw InputError("render: positions are not finite");
+    throw std::invalid_argument("render: " + std::to_string(x.rows()) + " positions for " + std::to_string(vertexCount_) + " vertices");
+  if (!x.allFinite()) throw std::invalid_argument("render: positions are not finite");
   const Active active = activeKeys(weights);
   if (active.count == 0) return;  // nothing has weight: nothing to draw
   const SeamWeld weld = weldSeams(x, seams_, pixelsPerUnit, {}, holding);
@@ -205,10 +205,10 @@ void MeshRenderer::drawOverlays(VkCommandBuffer cmd, const float view[4], VkExte
 
 void MeshRenderer::record(VkCommandBuffer cmd, int slot, VkExtent2D extent, const FrameDraw& frame) {
   if (slot < 0 || slot >= slots()) throw std::out_of_range("render: stream slot out of range");
-  if (!frame.positions) throw InputError("render: no positions to draw");
+  if (!frame.positions) throw std::invalid_argument("render: no positions to draw");
   if (frame.onion.size() > static_cast<size_t>(kMaxOnionSkins))
-    throw InputError("render: at most " + std::to_string(kMaxOnionSkins) + " onion skins");
-  if (!(frame.view.x1 > frame.view.x0 && frame.view.y1 > frame.view.y0)) throw InputError("render: the view box is empty");
+    throw std::invalid_argument("render: at most " + std::to_string(kMaxOnionSkins) + " onion skins");
+  if (!(frame.view.x1 > frame.view.x0 && frame.view.y1 > frame.view.y0)) throw std::invalid_argument("render: the view box is empty");
   float view[4];
   viewTransform(frame.view, view);
   // Target pixels per drawing pixel (the larger of x's and y's when the view stretches one).
@@ -216,7 +216,7 @@ void MeshRenderer::record(VkCommandBuffer cmd, int slot, VkExtent2D extent, cons
                                         extent.height / (frame.view.y1 - frame.view.y0));
   VkDeviceSize offset = 0;
   for (const OnionSkin& skin : frame.onion) {
-    if (!skin.positions) throw InputError("render: an onion skin has no positions");
+    if (!skin.positions) throw std::invalid_argument("render: an onion skin has no positions");
     const float o = std::clamp(skin.opacity, 0.0f, 1.0f);
     const float tint[4] = {skin.tint[0] * o, skin.tint[1] * o, skin.tint[2] * o, o};
     drawArtwork(cmd, view, pixelsPerUnit, *skin.positions, skin.weights, skin.holding, tint, slot, offset);

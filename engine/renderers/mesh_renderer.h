@@ -23,8 +23,9 @@ class MeshRenderer {
                VkSampleCountFlagBits samples, int slots);
 
   // Records `frame` into `cmd`, inside a begun render pass of `extent` pixels. Writes slot `slot`'s
-  // stream buffer: the caller must know that slot's previous frame has finished. Throws InputError
-  // for positions or weights of the wrong size, negative or non-finite weights, or too many onion skins.
+  // stream buffer: the caller must know that slot's previous frame has finished. Throws
+  // std::invalid_argument for positions or weights of the wrong size, negative or non-finite
+  // weights, or too many onion skins.
   void record(VkCommandBuffer cmd, int slot, VkExtent2D extent, const FrameDraw& frame);
 
   int slots() const { return static_cast<int>(streams_.size()); }

@@ -103,7 +103,7 @@ void OffscreenRenderer::submit(const FrameDraw& frame) {
   begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
   vk::check(vkBeginCommandBuffer(slot.cmd, &begin), "beginning a frame's command buffer");
   vk::beginRenderPass(slot.cmd, pass_.get(), slot.framebuffer.get(), extent_, clear_);
-  renderer_->record(slot.cmd, s, extent_, frame);  // may throw InputError: the slot stays free
+  renderer_->record(slot.cmd, s, extent_, frame);  // may throw on a bad frame: the slot stays free
   vkCmdEndRenderPass(slot.cmd);
   VkBufferImageCopy region{};
   region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};

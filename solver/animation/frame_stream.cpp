@@ -15,7 +15,7 @@ namespace {
 
 const Multimesh& matching(const Multimesh& mesh, const Timeline& timeline) {
   if (timeline.keyCount() != mesh.keyCount())
-    throw InputError("timeline: has weights for " + std::to_string(timeline.keyCount()) + " keys, the multimesh has " +
+    throw std::invalid_argument("timeline: has weights for " + std::to_string(timeline.keyCount()) + " keys, the multimesh has " +
                      std::to_string(mesh.keyCount()));
   return mesh;
 }
@@ -88,7 +88,7 @@ AnimationFrame FrameStream::next() {
 }
 
 AnimationFrame FrameStream::frameAt(double time) {
-  if (!std::isfinite(time)) throw InputError("frame time: must be a finite number of seconds");
+  if (!std::isfinite(time)) throw std::invalid_argument("frame time: must be a finite number of seconds");
   State& s = *state_;
   if (!s.dynamics_.enabled()) {
     const int index = static_cast<int>(std::floor((time - s.timeline_.start()) * s.timeline_.fps() + 1e-9));

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace ib {
 
@@ -25,15 +26,15 @@ Eigen::VectorXd bezierWeights(const Eigen::VectorXd& a, const std::vector<Eigen:
 
 Timeline::Timeline(double fps, bool loop, std::vector<TimelineMark> marks, std::vector<TimelineSegment> segments)
     : fps_(fps), loop_(loop), marks_(std::move(marks)), segments_(std::move(segments)) {
-  if (!(fps_ > 0 && std::isfinite(fps_))) throw InputError("timeline: fps must be a positive number");
-  if (marks_.empty()) throw InputError("timeline: needs at least one mark");
-  if (segments_.size() + 1 != marks_.size()) throw InputError("timeline: needs one segment between each two marks");
+  if (!(fps_ > 0 && std::isfinite(fps_))) throw std::invalid_argument("timeline: fps must be a positive number");
+  if (marks_.empty()) throw std::invalid_argument("timeline: needs at least one mark");
+  if (segments_.size() + 1 != marks_.size()) throw std::invalid_argument("timeline: needs one segment between each two marks");
   for (size_t k = 0; k < marks_.size(); ++k) {
-    if (!std::isfinite(marks_[k].time)) throw InputError("timeline: mark " + std::to_string(k + 1) + ": time must be finite");
+    if (!std::isfinite(marks_[k].time)) throw std::invalid_argument("timeline: mark " + std::to_string(k + 1) + ": time must be finite");
     if (k > 0 && !(marks_[k].time > marks_[k - 1].time))
-      throw InputError("timeline: mark " + std::to_string(k + 1) + ": times must increase");
+      throw std::invalid_argument("timeline: mark " + std::to_string(k + 1) + ": times must increase");
   }
-  if (loop_ && marks_.size() < 2) throw InputError("timeline: loop: needs at least two marks");
+  if (loop_ && marks_.size() < 2) throw std::invalid_argument("timeline: loop: needs at least two marks");
 }
 
 Timeline::Timeline() : Timeline(24, false, {{0, Eigen::VectorXd::Ones(1), ""}}, {}) {}

@@ -35,8 +35,9 @@ class Timeline {
  public:
   // A still: one mark at time 0 holding the first of one key, 24 frames per second.
   Timeline();
-  // marks: at least one, times strictly increasing; segments: marks.size() - 1. Throws
-  // InputError for anything else (the parser checks first and names the field).
+  // marks: at least one, finite times strictly increasing; segments: marks.size() - 1; fps > 0.
+  // Anything else is the caller's error (std::invalid_argument): parseTimeline checks first and
+  // names the field.
   Timeline(double fps, bool loop, std::vector<TimelineMark> marks, std::vector<TimelineSegment> segments);
 
   double fps() const { return fps_; }

@@ -72,14 +72,14 @@ int threadsFor(int requested, int vertices) {
 
 void validateWeights(const Eigen::VectorXd& w, int keyCount) {
   if (w.size() != keyCount)
-    throw InputError("weights: expected " + std::to_string(keyCount) + " values (one per key), got " +
+    throw std::invalid_argument("weights: expected " + std::to_string(keyCount) + " values (one per key), got " +
                      std::to_string(w.size()));
   for (int i = 0; i < w.size(); ++i) {
-    if (!std::isfinite(w(i))) throw InputError("weights: w[" + std::to_string(i) + "] is not a finite number");
-    if (w(i) < 0) throw InputError("weights: w[" + std::to_string(i) + "] = " + std::to_string(w(i)) + " is negative");
+    if (!std::isfinite(w(i))) throw std::invalid_argument("weights: w[" + std::to_string(i) + "] is not a finite number");
+    if (w(i) < 0) throw std::invalid_argument("weights: w[" + std::to_string(i) + "] = " + std::to_string(w(i)) + " is negative");
   }
   if (std::abs(w.sum() - 1.0) > 1e-6)
-    throw InputError("weights: sum to " + std::to_string(w.sum()) + ", must sum to 1");
+    throw std::invalid_argument("weights: sum to " + std::to_string(w.sum()) + ", must sum to 1");
 }
 
 double Interpolator::Impl::gradientNorm(const Eigen::MatrixX2d& g) const {
@@ -168,9 +168,9 @@ Interpolator::Impl::Frame Interpolator::Impl::makeFrame(const Eigen::VectorXd& w
   if (springs) {
     const int n = vertexCount();
     if (springs->stiffness.size() != n || springs->target.rows() != n)
-      throw InputError("vertex springs: expected " + std::to_string(n) + " stiffnesses and targets");
+      throw std::invalid_argument("vertex springs: expected " + std::to_string(n) + " stiffnesses and targets");
     if (!springs->target.allFinite() || !springs->stiffness.allFinite() || springs->stiffness.minCoeff() < 0)
-      throw InputError("vertex springs: stiffnesses must be finite and >= 0, targets finite");
+      throw std::invalid_argument("vertex springs: stiffnesses must be finite and >= 0, targets finite");
     if (springs->stiffness.maxCoeff() > 0) {
       f.springs.resize(n);
       for (int k = 0; k < n; ++k) f.springs(k) = springs->stiffness(originalOf_[k]);
@@ -247,7 +247,7 @@ void Interpolator::Impl::forgetHistory() {
 }
 
 EnergyEvaluation Interpolator::Impl::evaluate(const Eigen::MatrixX2d& x, const Eigen::VectorXd& w) const {
-  if (x.rows() != vertexCount()) throw InputError("positions: expected " + std::to_string(vertexCount()) + " rows");
+  if (x.rows() != vertexCount()) throw std::invalid_argument("positions: expected " + std::to_string(vertexCount()) + " rows");
   const Frame frame = makeFrame(w, nullptr);
   State s;
   s.x = toLayout(x, originalOf_) / scale_;
@@ -256,7 +256,7 @@ EnergyEvaluation Interpolator::Impl::evaluate(const Eigen::MatrixX2d& x, const E
 }
 
 int Interpolator::Impl::countOverlaps(const Eigen::MatrixX2d& x, const Eigen::VectorXd& w) const {
-  if (x.rows() != vertexCount()) throw InputError("positions: expected " + std::to_string(vertexCount()) + " rows");
+  if (x.rows() != vertexCount()) throw std::invalid_argument("positions: expected " + std::to_string(vertexCount()) + " rows");
   return nonOverlap_->countInside(toLayout(x, originalOf_) / scale_, makeFrame(w, nullptr).participants);
 }
 
@@ -299,7 +299,7 @@ InterpolationResult Interpolator::Impl::solve(const Eigen::VectorXd& w, const Ei
   State s;
   if (warmStart) {
     if (warmStart->rows() != vertexCount() || !warmStart->allFinite())
-      throw InputError("warm start: expected " + std::to_string(vertexCount()) + " finite positions");
+      throw std::invalid_argument("warm start: expected " + std::to_string(vertexCount()) + " finite positions");
     s.x = toLayout(*warmStart, originalOf_) / scale_;
   } else {
     s.x = frame.blend;

@@ -113,10 +113,11 @@ class Interpolator {
   Interpolator(Interpolator&&) noexcept;
   Interpolator& operator=(Interpolator&&) noexcept;
 
-  // Solves for weights w (m x 1, convex). warmStart (n x 2, multimesh units) is the previous
+  // Solves for weights w (m x 1, convex; validateWeights). warmStart (n x 2, multimesh units) is the previous
   // frame; without it the solve starts from the linear blend sum_i w_i X_i. springs, when given,
   // add E_S to this solve's energy (and to H, which is then refactorized whenever some c_v has
-  // moved by more than a fifth since the last factorization).
+  // moved by more than a fifth since the last factorization). Wrong sizes and non-finite inputs
+  // are the caller's error (std::invalid_argument).
   InterpolationResult solve(const Eigen::VectorXd& w, const Eigen::MatrixX2d* warmStart = nullptr,
                             const VertexSprings* springs = nullptr);
 
@@ -147,7 +148,9 @@ class Interpolator {
   std::unique_ptr<Impl> impl_;
 };
 
-// Checks interpolation weights: m entries, finite, non-negative, summing to 1 (within 1e-6).
+// Checks interpolation weights: m entries, finite, non-negative, summing to 1 (within 1e-6);
+// throws std::invalid_argument otherwise (weights come from a timeline or a front end that
+// normalized them, never straight from a file).
 void validateWeights(const Eigen::VectorXd& w, int keyCount);
 
 }  // namespace ib

@@ -1,10 +1,9 @@
 #include "testkit/reference_arap.h"
 
-#include "core/error.h"
-
 #include <Eigen/LU>
 #include <Eigen/SVD>
 #include <algorithm>
+#include <stdexcept>
 #include <string>
 
 namespace ib {
@@ -32,10 +31,10 @@ Eigen::Matrix2d bestRotation(const Eigen::Matrix2d& s) {
 ReferenceArap::ReferenceArap(const Eigen::MatrixX2d& rest, const std::vector<Triangle>& triangles,
                              const std::vector<int>& handles)
     : n_(static_cast<int>(rest.rows())), t_(static_cast<int>(triangles.size())), triangles_(triangles), rest_(rest) {
-  if (handles.empty()) throw InputError("reference ARAP: at least one handle vertex is needed");
+  if (handles.empty()) throw std::invalid_argument("reference ARAP: at least one handle vertex is needed");
   std::vector<int> slot(n_, -1);  // >= 0: index among the free vertices; -2: a handle
   for (int h : handles) {
-    if (h < 0 || h >= n_) throw InputError("reference ARAP: handle " + std::to_string(h) + " is not a vertex");
+    if (h < 0 || h >= n_) throw std::invalid_argument("reference ARAP: handle " + std::to_string(h) + " is not a vertex");
     slot[h] = -2;
   }
   handles_ = handles;
@@ -52,13 +51,13 @@ ReferenceArap::ReferenceArap(const Eigen::MatrixX2d& rest, const std::vector<Tri
   for (int tri = 0; tri < t_; ++tri) {
     const Triangle& f = triangles_[tri];
     for (int v : f)
-      if (v < 0 || v >= n_) throw InputError("reference ARAP: triangle " + std::to_string(tri) + " has a bad vertex");
+      if (v < 0 || v >= n_) throw std::invalid_argument("reference ARAP: triangle " + std::to_string(tri) + " has a bad vertex");
     for (int e = 0; e < 3; ++e) {  // c_e = cot(angle at the opposite corner) / 2
       const Eigen::Vector2d a = rest.row(f[kEdge[e][0]]) - rest.row(f[e]);
       const Eigen::Vector2d b = rest.row(f[kEdge[e][1]]) - rest.row(f[e]);
       const double cross = a.x() * b.y() - a.y() * b.x();
       if (!(cross > 1e-14 * (a.squaredNorm() + b.squaredNorm())))
-        throw InputError("reference ARAP: triangle " + std::to_string(tri) + " is degenerate or inverted");
+        throw std::invalid_argument("reference ARAP: triangle " + std::to_string(tri) + " is degenerate or inverted");
       cot_[tri](e) = 0.5 * a.dot(b) / cross;
     }
     for (int e = 0; e < 3; ++e) {
@@ -95,7 +94,7 @@ ReferenceArap::ReferenceArap(const Eigen::MatrixX2d& rest, const std::vector<Tri
   lfc_.setFromTriplets(lfc.begin(), lfc.end());
   llt_.compute(lff_);
   if (llt_.info() != Eigen::Success)
-    throw InputError("reference ARAP: the free-vertex system is singular (a part of the mesh has no handle)");
+    throw std::invalid_argument("reference ARAP: the free-vertex system is singular (a part of the mesh has no handle)");
 }
 
 Eigen::VectorXd ReferenceArap::rotationsColumn(const Eigen::MatrixX2d& x) const {
