@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Installs every Debian package inbetween needs, then configures and builds (Release).
 # Idempotent: safe to run twice. Usage: scripts/setup.sh [BUILD_DIR]   (default: build)
+# INBETWEEN_WERROR=ON in the environment makes compiler warnings errors (.ci/run sets it);
+# INBETWEEN_ENGINE=OFF installs and builds the solver alone (no Vulkan, GLFW, ImGui or Xvfb).
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 build=${1:-"$here/build"}
@@ -9,10 +11,14 @@ packages=(
   build-essential cmake pkg-config git
   libeigen3-dev libmetis-dev libopenmesh-dev catch2 nlohmann-json3-dev
   libcgal-dev libpotrace-dev libpng-dev
+  libtinygltf-dev libstb-dev
+)
+engine_packages=(
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers glslang-tools
-  libglfw3-dev libglm-dev libimgui-dev libtinygltf-dev libstb-dev
+  libglfw3-dev libglm-dev libimgui-dev
   xvfb xauth
 )
+[ "${INBETWEEN_ENGINE:-ON}" = "OFF" ] || packages+=("${engine_packages[@]}")
 
 missing=()
 for p in "${packages[@]}"; do
@@ -26,5 +32,8 @@ if [ ${#missing[@]} -gt 0 ]; then
   DEBIAN_FRONTEND=noninteractive $sudo_cmd apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
 
-cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=Release
+options=(-DCMAKE_BUILD_TYPE=Release)
+[ -z "${INBETWEEN_WERROR:-}" ] || options+=("-DINBETWEEN_WERROR=$INBETWEEN_WERROR")
+[ -z "${INBETWEEN_ENGINE:-}" ] || options+=("-DINBETWEEN_ENGINE=$INBETWEEN_ENGINE")
+cmake -S "$here" -B "$build" "${options[@]}"
 cmake --build "$build" -j "$(nproc)"
