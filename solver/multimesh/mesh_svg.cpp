@@ -1,6 +1,8 @@
 #include "multimesh/mesh_svg.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <sstream>
 #include <vector>
 
@@ -37,28 +39,39 @@ std::string escaped(const std::string& s) {
   return out;
 }
 
+// Estimated advance of one character in em (see estimatedTextBox).
+double advance(unsigned char c) {
+  if (c >= 0x80) return 1.0;
+  if (c != 0 && std::strchr("ijltfrIJ.,:;'!|()[]- ", c) != nullptr) return 0.4;
+  if (c != 0 && std::strchr("mwMW@%", c) != nullptr) return 1.0;
+  if (c >= 'A' && c <= 'Z') return 0.8;
+  return 0.65;
+}
+
 }  // namespace
+
+TextBox estimatedTextBox(const std::string& text, double x, double y, double fontSize, bool anchorEnd) {
+  double em = 0;
+  for (unsigned char c : text)
+    if ((c & 0xC0) != 0x80) em += advance(c);  // UTF-8 continuation bytes belong to the character before
+  const double width = em * fontSize;
+  return {anchorEnd ? x - width : x, y - 0.8 * fontSize, anchorEnd ? x : x + width, y + 0.25 * fontSize};
+}
 
 std::string meshSvg(const Multimesh& mesh, int key, const KeyShape& shape, const std::string& drawingPng, int width,
                     int height) {
   const Eigen::MatrixX2d x = mesh.keyPositions(key);
   const double stroke = std::max(0.15, std::max(width, height) / 1500.0);  // px
-  std::ostringstream svg;
-  svg.precision(6);
-  svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 " << width << ' ' << height << "\" width=\"" << width
-      << "\" height=\"" << height << "\">\n";
-  svg << "<image width=\"" << width << "\" height=\"" << height << "\" opacity=\"0.6\" href=\"data:image/png;base64,"
-      << base64(drawingPng) << "\"/>\n";
-  svg << "<path fill=\"none\" stroke=\"#1f5fbf\" stroke-width=\"" << stroke << "\" stroke-linejoin=\"round\" d=\"";
-  for (const Triangle& t : mesh.triangles())
-    svg << 'M' << x(t[0], 0) << ',' << x(t[0], 1) << 'L' << x(t[1], 0) << ',' << x(t[1], 1) << 'L' << x(t[2], 0) << ','
-        << x(t[2], 1) << 'Z';
-  svg << "\"/>\n<path fill=\"none\" stroke=\"#e0201b\" stroke-width=\"" << 3 * stroke << "\" d=\"";
-  for (const CohesivePair& p : mesh.cohesivePairs(key))
-    svg << 'M' << x(p.a, 0) << ',' << x(p.a, 1) << 'L' << x(p.b, 0) << ',' << x(p.b, 1);
-  svg << "\"/>\n";
   const double radius = 6 * stroke, font = 40 * stroke;
-  // Labels point away from the middle of the mesh, so features on opposite sides do not collide.
+  // The dots and labels first, so the viewBox can take them in. Labels point away from the middle
+  // of the mesh, so features on opposite sides do not collide.
+  std::ostringstream features;
+  features.precision(6);
+  TextBox bounds{0, 0, double(width), double(height)};  // drawing px
+  const auto include = [&bounds](const TextBox& b) {
+    bounds = {std::min(bounds.x0, b.x0), std::min(bounds.y0, b.y0), std::max(bounds.x1, b.x1),
+              std::max(bounds.y1, b.y1)};
+  };
   const double middle = 0.5 * (x.col(0).minCoeff() + x.col(0).maxCoeff());
   std::vector<Eigen::Vector2d> labelled;  // features already drawn: collocated ones stack their labels
   for (const ShapeLoop& loop : shape.loops)
@@ -68,12 +81,32 @@ std::string meshSvg(const Multimesh& mesh, int key, const KeyShape& shape, const
       int below = 0;
       for (const Eigen::Vector2d& q : labelled) below += (q - p).norm() < radius;
       labelled.push_back(p);
-      svg << "<circle cx=\"" << p.x() << "\" cy=\"" << p.y() << "\" r=\"" << radius << "\" fill=\"#f0a000\"/>"
-          << "<text text-anchor=\"" << (p.x() < middle ? "end" : "start") << "\" x=\""
-          << p.x() + (p.x() < middle ? -1.5 : 1.5) * radius << "\" y=\"" << p.y() - 1.5 * radius + 1.1 * font * below
-          << "\" font-size=\"" << font
-          << "\" font-family=\"sans-serif\" fill=\"#804000\">" << escaped(loop.features[i]) << "</text>\n";
+      const bool left = p.x() < middle;
+      const double tx = p.x() + (left ? -1.5 : 1.5) * radius, ty = p.y() - 1.5 * radius + 1.1 * font * below;
+      include({p.x() - radius, p.y() - radius, p.x() + radius, p.y() + radius});
+      include(estimatedTextBox(loop.features[i], tx, ty, font, left));
+      features << "<circle cx=\"" << p.x() << "\" cy=\"" << p.y() << "\" r=\"" << radius << "\" fill=\"#f0a000\"/>"
+               << "<text text-anchor=\"" << (left ? "end" : "start") << "\" x=\"" << tx << "\" y=\"" << ty
+               << "\" font-size=\"" << font << "\" font-family=\"sans-serif\" fill=\"#804000\">"
+               << escaped(loop.features[i]) << "</text>\n";
     }
+  // Whole pixels, one user unit a pixel, so the drawing shows at its own size.
+  const long x0 = std::lround(std::floor(bounds.x0)), y0 = std::lround(std::floor(bounds.y0));
+  const long w = std::lround(std::ceil(bounds.x1)) - x0, h = std::lround(std::ceil(bounds.y1)) - y0;
+  std::ostringstream svg;
+  svg.precision(6);
+  svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"" << x0 << ' ' << y0 << ' ' << w << ' ' << h
+      << "\" width=\"" << w << "\" height=\"" << h << "\">\n";
+  svg << "<image width=\"" << width << "\" height=\"" << height << "\" opacity=\"0.6\" href=\"data:image/png;base64,"
+      << base64(drawingPng) << "\"/>\n";
+  svg << "<path fill=\"none\" stroke=\"#1f5fbf\" stroke-width=\"" << stroke << "\" stroke-linejoin=\"round\" d=\"";
+  for (const Triangle& t : mesh.triangles())
+    svg << 'M' << x(t[0], 0) << ',' << x(t[0], 1) << 'L' << x(t[1], 0) << ',' << x(t[1], 1) << 'L' << x(t[2], 0) << ','
+        << x(t[2], 1) << 'Z';
+  svg << "\"/>\n<path fill=\"none\" stroke=\"#e0201b\" stroke-width=\"" << 3 * stroke << "\" d=\"";
+  for (const CohesivePair& p : mesh.cohesivePairs(key))
+    svg << 'M' << x(p.a, 0) << ',' << x(p.a, 1) << 'L' << x(p.b, 0) << ',' << x(p.b, 1);
+  svg << "\"/>\n" << features.str();
   svg << "</svg>\n";
   return svg.str();
 }
