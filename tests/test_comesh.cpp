@@ -2,15 +2,18 @@
 #include "interpolation/interpolator.h"
 #include "meshing/multimesh_builder.h"
 #include "multimesh/mesh_quality.h"
+#include "multimesh/multimesh_io.h"
 #include "testkit/drawings.h"
 #include "testkit/example_scenes.h"
 #include "testkit/shape_checks.h"
+#include "testkit/shared_results.h"
 
 #include <catch2/catch.hpp>
 #include <Eigen/Dense>
 #include <cmath>
 #include <filesystem>
 #include <map>
+#include <sstream>
 
 using namespace ib;
 
@@ -28,7 +31,30 @@ Scene writeAndLoad(const test::ExampleScene& example, const std::string& folder)
   return loadScene((std::filesystem::path(folder) / example.name / "scene.json").string());
 }
 
-// The Comesh scenes and the cell split, built and optimized once per test run.
+// A Comesh result as bytes: the report's counts and energies on one line, then the multimesh
+// file. Doubles are written with 17 digits, so they read back exactly.
+std::string encodeReport(const ComeshReport& r, const Multimesh& result) {
+  std::ostringstream line;
+  line.precision(17);
+  line << r.keys << ' ' << r.verticesIn << ' ' << r.verticesOut << ' ' << r.trianglesIn << ' ' << r.trianglesOut << ' '
+       << r.cohesiveIn << ' ' << r.cohesiveOut << ' ' << r.outerIterations << ' ' << r.innerIterations << ' '
+       << r.remesh.flips << ' ' << r.remesh.splits << ' ' << r.remesh.collapses << ' ' << r.remesh.flipSeconds << ' '
+       << r.remesh.splitSeconds << ' ' << r.remesh.collapseSeconds << ' ' << r.energyIn << ' ' << r.energyOut << ' '
+       << r.seconds << '\n';
+  return line.str() + encodeMultimesh(result);
+}
+
+Multimesh decodeReport(const std::string& bytes, ComeshReport& r) {
+  const size_t end = bytes.find('\n');
+  std::istringstream line(bytes.substr(0, end));
+  line >> r.keys >> r.verticesIn >> r.verticesOut >> r.trianglesIn >> r.trianglesOut >> r.cohesiveIn >> r.cohesiveOut >>
+      r.outerIterations >> r.innerIterations >> r.remesh.flips >> r.remesh.splits >> r.remesh.collapses >>
+      r.remesh.flipSeconds >> r.remesh.splitSeconds >> r.remesh.collapseSeconds >> r.energyIn >> r.energyOut >> r.seconds;
+  return decodeMultimesh(bytes.substr(end + 1), "shared Comesh result");
+}
+
+// The Comesh scenes and the cell split, built once per test process and optimized once per build
+// of the test program (test::sharedResult): four test cases read them.
 const std::map<std::string, Optimized>& optimizedScenes() {
   static const auto all = [] {
     const std::string folder = test::scratchDirectory("comesh");
@@ -40,7 +66,12 @@ const std::map<std::string, Optimized>& optimizedScenes() {
       const Scene scene = writeAndLoad(example, folder);
       BuiltScene built = buildMultimesh(scene, MultimeshBuildOptions{});
       ComeshReport report;
-      Multimesh result = comeshOptimize(*built.multimesh, &built.boundary, ComeshOptions{}, &report);
+      const std::string bytes = test::sharedResult("comesh-" + example.name + ".ibmesh", [&] {
+        ComeshReport computed;
+        const Multimesh optimized = comeshOptimize(*built.multimesh, &built.boundary, ComeshOptions{}, &computed);
+        return encodeReport(computed, optimized);
+      });
+      Multimesh result = decodeReport(bytes, report);
       out.emplace(example.name, Optimized{scene, std::move(built), std::move(result), report});
     }
     return out;

@@ -3,6 +3,7 @@
 #include "render_fixtures.h"
 
 #include <catch2/catch.hpp>
+#include <stdexcept>
 
 #include <algorithm>
 #include <cmath>
@@ -185,5 +186,5 @@ TEST_CASE("contact sheet: tiles land row by row over the background with gaps") 
   }
   CHECK(test::pixel(sheet, 0, 0)[0] == 255);                  // the white background in the gap
   CHECK(test::pixel(sheet, 2 + 2 * 12 + 5, 2 + 8 + 3)[0] == 255);  // the empty sixth cell
-  CHECK_THROWS_AS(contactSheet({}, options), InputError);
+  CHECK_THROWS_AS(contactSheet({}, options), std::invalid_argument);
 }

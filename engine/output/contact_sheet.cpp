@@ -1,9 +1,8 @@
 #include "output/contact_sheet.h"
 
-#include "core/error.h"
-
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <vector>
 
 namespace ib::render {
@@ -38,7 +37,7 @@ std::vector<Footprint> footprints(int from, int to) {
 }  // namespace
 
 RgbaImage shrink(const RgbaImage& frame, int width, int height) {
-  if (frame.width < 1 || frame.height < 1) throw InputError("contact sheet: an empty frame");
+  if (frame.width < 1 || frame.height < 1) throw std::invalid_argument("contact sheet: an empty frame");
   width = std::clamp(width, 1, frame.width);
   height = std::clamp(height, 1, frame.height);
   // The area filter is separable (a footprint covers a source pixel by its x overlap times its y
@@ -81,10 +80,10 @@ RgbaImage shrink(const RgbaImage& frame, int width, int height) {
 }
 
 RgbaImage contactSheet(const std::vector<RgbaImage>& tiles, const ContactSheetOptions& options) {
-  if (tiles.empty()) throw InputError("contact sheet: no frames");
+  if (tiles.empty()) throw std::invalid_argument("contact sheet: no frames");
   const int tw = tiles[0].width, th = tiles[0].height;
   for (const RgbaImage& t : tiles)
-    if (t.width != tw || t.height != th) throw InputError("contact sheet: tiles differ in size");
+    if (t.width != tw || t.height != th) throw std::invalid_argument("contact sheet: tiles differ in size");
   const int count = static_cast<int>(tiles.size());
   const int columns = options.columns > 0 ? std::min(options.columns, count)
                                           : static_cast<int>(std::ceil(std::sqrt(static_cast<double>(count))));

@@ -20,7 +20,7 @@ struct ContactSheetOptions {
 // an area filter: every output pixel is the exact area-weighted average of the source pixels its
 // footprint covers, fractional ones at its edges included, so a non-integer ratio (384 -> 240 px)
 // leaves straight outlines straight. Averages premultiplied colour, so transparent pixels add no
-// fringe. Throws InputError for an empty frame.
+// fringe. Throws std::invalid_argument for an empty frame (a caller's error).
 RgbaImage shrink(const RgbaImage& frame, int width, int height);
 
 // The sheet of `tiles` (each already shrunk to the same size, e.g. by shrink()), row by row. Opaque.
