@@ -1,6 +1,6 @@
 // Dynamic effects for variational interpolation (paper section 6.1), and the blending controller
 // that drives them from one compliance epsilon (the paper's supplement is not available; this
-// design is ours and documented in README.md, "Dynamics").
+// design is ours and documented in docs/animation.md, "Dynamics").
 //
 // A frame s with dynamics minimizes W_I(x, w(s)) + W_T(x, xi) + W_A(x):
 //   x_p   = x(s-1) + h e^{-mu h} v(s-1) + h^2 a(s)              eq. 17, damping as exact velocity decay

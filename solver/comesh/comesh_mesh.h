@@ -12,7 +12,7 @@
 
 namespace ib {
 
-// Where boundary vertices live: every loop of the outline is cut into arcs (design.md); a boundary
+// Where boundary vertices live: every loop of the outline is cut into arcs (docs/design.md, "Loops and arcs"); a boundary
 // vertex sits at a fraction u of one arc's length, independently in every key. Vertices at u = 0
 // (features, cut ends, the start of a featureless loop) never move.
 struct ComeshBoundary {

@@ -1,5 +1,5 @@
 // When the interpolation solver factorizes H, and when it updates H's factor instead (see
-// interpolator.h and "When cohesive pairs engage or let go" in the README).
+// interpolator.h and docs/solver.md, "When cohesive pairs engage or let go").
 #include "interpolation/interpolator_impl.h"
 
 #include <chrono>

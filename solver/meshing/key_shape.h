@@ -1,4 +1,4 @@
-// A key's shape as the multimesh sees it (design.md, "The scene model"): the traced outlines
+// A key's shape as the multimesh sees it (docs/design.md, "The scene model"): the traced outlines
 // with the key's features snapped onto them, cut open along the key's own cuts. After cutting,
 // every key of a scene must have the same loops with the same features in the same order.
 #pragma once

@@ -1,4 +1,4 @@
-// Scene to multimesh (design.md, data flow "scene" and "multimesh"): trace every key's drawing,
+// Scene to multimesh (docs/design.md, data flow "scene" and "multimesh"): trace every key's drawing,
 // snap features, apply cuts, match boundaries, mesh the reference key and map the mesh onto every
 // other key without foldovers.
 #pragma once

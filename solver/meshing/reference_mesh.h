@@ -1,4 +1,4 @@
-// The reference key's triangulation (design.md, "Multimesh"): its resampled boundary, cut sides as
+// The reference key's triangulation (docs/design.md, "Multimesh"): its resampled boundary, cut sides as
 // constraints, meshed by CGAL, then cut open so each cut side has its own vertices. Every boundary
 // vertex is tagged with the shared-boundary arc it lies on and its fraction along that arc, so the
 // same vertex can be placed in every key.

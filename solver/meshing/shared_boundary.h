@@ -1,4 +1,4 @@
-// Boundary correspondence across keys (design.md, "The scene model"): every key's loops are
+// Boundary correspondence across keys (docs/design.md, "The scene model"): every key's loops are
 // matched to the reference key's, cut into arcs at the features, and every arc gets the same
 // number of boundary edges in every key, spaced by arc length.
 #pragma once

@@ -1,6 +1,6 @@
 // The scene file: key drawings and the annotations that tie them together (features, cuts),
 // the reference key, the target edge length, tracing and solver parameters, the timeline,
-// dynamics and stiffness painting. Format: README.md, "Scene file". Coordinates are drawing
+// dynamics and stiffness painting. Format: docs/scene-format.md. Coordinates are drawing
 // pixels, y down; paths are relative to the scene file.
 #pragma once
 
@@ -27,7 +27,7 @@ struct CutSpec {
   Polyline points;  // >= 2, drawing pixels
 };
 
-// The features a cut creates at its ends, named after it (see README.md, "Scene file"):
+// The features a cut creates at its ends, named after it (see docs/scene-format.md, "Features and cuts"):
 // notch NAME.left, NAME.right (at the mouth, as seen walking into the shape), NAME.tip;
 // split NAME.start.left, NAME.start.right, NAME.end.left, NAME.end.right; slit NAME.start, NAME.end.
 std::vector<std::string> cutFeatureNames(const std::string& cut, CutKind kind);

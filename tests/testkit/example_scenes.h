@@ -1,4 +1,4 @@
-// Example scenes generated in code, with their drawings: the cases issue 3 asks for (square to
+// Example scenes generated in code, with their drawings: the geometric cases (square to
 // arch stretched and notched, disc to ring, one cell to two, nested rings) and bad scenes, one
 // per kind of mistake. Tests write them to scratch folders; `write_example_scenes` writes them to
 // a folder (the bundled assets/ and the command-line tests come from it).

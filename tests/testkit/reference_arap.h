@@ -1,7 +1,7 @@
 // A yardstick for benchmarks: single-key 2D ARAP deformation (local-global, one rotation per
-// triangle, cotangent weights) in libigl's formulation, serial. Issue 2 states its speed
-// targets beside libigl's figures on this kind of machine (3.0 ms per iteration at 10k
-// vertices, 49 ms at 100k); timing this next to the interpolator tells how fast the shared
+// triangle, cotangent weights) in libigl's formulation, serial. The interpolation speed targets
+// are stated beside libigl's figures on this kind of machine (3.0 ms per iteration at 10k
+// vertices, 49 ms at 100k; docs/benchmarks.md); timing this next to the interpolator tells how fast the shared
 // machine ran during a benchmark, so that figures from different runs can be compared.
 //
 // Energy: E(x) = sum_t min_{R_t in SO(2)} sum_{edges e=(i,j) of t} c_e |(x_i - x_j) - R_t (X_i - X_j)|^2,
