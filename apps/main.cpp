@@ -1,9 +1,9 @@
 // The `inbetween` command: a thin front end over the solver and the engine.
 // Exit codes: 0 success, 2 bad input (message names the file, field or option), 1 internal error.
-#include "bench.h"
-#include "mesh_command.h"
+#include "bench/bench.h"
+#include "commands/mesh_command.h"
 #ifdef INBETWEEN_WITH_ENGINE
-#include "render_command.h"
+#include "commands/render_command.h"
 #endif
 #include "core/error.h"
 

@@ -1,19 +1,18 @@
-#include "mesh_command.h"
+#include "commands/mesh_command.h"
 
 #include "cli.h"
+#include "commands/mesh_report.h"
 #include "comesh/comesh.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
-#include "mesh_report.h"
-#include "meshing/multimesh_builder.h"
-#include "meshing/stiffness_paint.h"
 #include "multimesh/mesh_svg.h"
 #include "multimesh/multimesh_io.h"
+#include "pipeline/scene_multimesh.h"
 #include "progress.h"
+#include "scene/scene.h"
 
 #include <cstdio>
 #include <filesystem>
-#include <stdexcept>
 #include <nlohmann/json.hpp>
 
 namespace ib {
@@ -31,8 +30,9 @@ constexpr const char* kUsage =
     "  -o, --output OUT  multimesh file to write (default: SCENE's folder, SCENE's name .ibmesh);\n"
     "                    the initial map goes next to it as OUT's name .initial.ibmesh\n"
     "  --json            print the summary as one JSON object\n"
-    "  --no-pictures     skip the pictures (OUT's name, then .KEY.svg: mesh over drawing,\n"
-    "                    cohesive edges red, features as dots)\n"
+    "  --no-pictures     skip the pictures, one SVG per key: OUT's name .KEY.svg, and for the\n"
+    "                    initial map OUT's name .initial.KEY.svg (mesh over drawing, cohesive\n"
+    "                    edges red, features as dots)\n"
     "  --no-comesh       write the initial map only, as OUT\n";
 
 namespace fs = std::filesystem;
@@ -41,11 +41,12 @@ fs::path besideOutput(const fs::path& output, const std::string& suffix) {
   return output.parent_path() / (output.stem().string() + suffix);
 }
 
-// One SVG per key; adds each picture's path to the key's entry in `quality`.
-void writePictures(const Scene& scene, const BuiltScene& built, const Multimesh& mesh, const fs::path& output,
-                   nlohmann::json& quality) {
+// One SVG per key of `mesh`, OUT's name + version + .KEY.svg; adds each picture's path to the
+// key's entry in `quality`.
+void writePictures(const Scene& scene, const SceneMultimesh& built, const Multimesh& mesh, const fs::path& output,
+                   const std::string& version, nlohmann::json& quality) {
   for (size_t k = 0; k < scene.keys.size(); ++k) {
-    const fs::path picture = besideOutput(output, "." + scene.keys[k].name + ".svg");
+    const fs::path picture = besideOutput(output, version + "." + scene.keys[k].name + ".svg");
     const auto [width, height] = built.drawingSizes[k];
     writeFileAtomically(picture.string(), meshSvg(mesh, static_cast<int>(k), built.shapes[k],
                                                   readFile(scene.keys[k].drawing), width, height));
@@ -62,55 +63,40 @@ int runMesh(const std::vector<std::string>& rawArgs) {
   if (options.positional().size() != 1) throw InputError("mesh: needs exactly one SCENE file (see `inbetween mesh --help`)");
   const std::string scenePath = options.positional()[0];
   const Scene scene = loadScene(scenePath);
-  const fs::path output = options.value("output", (fs::path(scenePath).parent_path() / fs::path(scenePath).stem()).string() + ".ibmesh");
-  const bool comesh = !options.flag("no-comesh");
+  const fs::path output = options.value("output", cachedMeshPath(scenePath));
+  const bool pictures = !options.flag("no-pictures");
   std::vector<std::string> names;
   for (const KeySpec& key : scene.keys) names.push_back(key.name);
 
   cli::Progress progress;
-  MultimeshBuildOptions buildOptions;
-  const double buildShare = comesh ? 0.3 : 0.9;
-  buildOptions.progress = [&](const std::string& stage, double fraction) { progress.update(stage, buildShare * fraction); };
-  const BuiltScene built = buildMultimesh(scene, buildOptions);
+  SceneMultimeshOptions meshOptions;
+  meshOptions.useCache = false;  // this command makes the cache
+  meshOptions.comesh = !options.flag("no-comesh");
+  const SceneMultimesh built =
+      sceneMultimesh(scene, meshOptions, [&](const std::string& stage, double fraction) { progress.update(stage, 0.9 * fraction); });
   nlohmann::json summary{{"scene", scenePath}, {"edge_length", built.edgeLength}};
-  summary["initial"] = qualityJson(*built.multimesh, names);
+  summary["initial"] = qualityJson(*built.initial, names);
   const nlohmann::json* after = nullptr;
   const nlohmann::json* table = nullptr;
-  if (comesh) {
-    ComeshOptions comeshOptions;
-    comeshOptions.progress = [&](int outer, double energy) {
-      char stage[96];
-      std::snprintf(stage, sizeof stage, "comesh: outer iteration %d, energy %.6g", outer, energy);
-      progress.update(stage, buildShare + (0.9 - buildShare) * outer / comeshOptions.outerIterations);
-    };
-    ComeshReport report;
-    Multimesh optimized = comeshOptimize(*built.multimesh, &built.boundary, comeshOptions, &report);
-    // Flips, splits and collapses made new triangles: paint them again from the scene.
-    paintStiffness(optimized, scene.stiffness, scene.solver.kappa);
-    try {
-      optimized.validate();
-    } catch (const InputError& e) {  // the input was fine: a broken result is our fault (exit 1)
-      throw std::runtime_error(std::string("Comesh Optimization produced an invalid multimesh: ") + e.what());
-    }
-    progress.update("writing", 0.95);
+  progress.update("writing", 0.95);
+  if (built.comesh) {
     const fs::path initialFile = besideOutput(output, ".initial.ibmesh");
-    saveMultimesh(*built.multimesh, initialFile.string());
-    saveMultimesh(optimized, output.string());
+    saveMultimesh(*built.initial, initialFile.string());
+    saveMultimesh(*built.multimesh, output.string());
     summary["initial"]["multimesh"] = initialFile.string();
-    summary["comesh"] = comeshJson(report);
-    summary["optimized"] = qualityJson(optimized, names);
+    summary["comesh"] = comeshJson(*built.comesh);
+    summary["optimized"] = qualityJson(*built.multimesh, names);
     summary["optimized"]["multimesh"] = output.string();
-    if (!options.flag("no-pictures")) {
-      writePictures(scene, built, *built.multimesh, besideOutput(output, ".initial"), summary["initial"]);
-      writePictures(scene, built, optimized, output, summary["optimized"]);
+    if (pictures) {
+      writePictures(scene, built, *built.initial, output, ".initial", summary["initial"]);
+      writePictures(scene, built, *built.multimesh, output, "", summary["optimized"]);
     }
     after = &summary["optimized"];
     table = &summary["comesh"];
   } else {
-    progress.update("writing", 0.95);
-    saveMultimesh(*built.multimesh, output.string());
+    saveMultimesh(*built.initial, output.string());
     summary["initial"]["multimesh"] = output.string();
-    if (!options.flag("no-pictures")) writePictures(scene, built, *built.multimesh, output, summary["initial"]);
+    if (pictures) writePictures(scene, built, *built.initial, output, "", summary["initial"]);
   }
   progress.finish();
   if (options.flag("json")) {

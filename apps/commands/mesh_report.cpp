@@ -1,4 +1,4 @@
-#include "mesh_report.h"
+#include "commands/mesh_report.h"
 
 #include "meshing/untangle.h"
 #include "multimesh/mesh_quality.h"

@@ -1,9 +1,16 @@
-#include "render_command.h"
+#include "commands/render_command.h"
 
 #include "animation/frame_stream.h"
+#include "commands/output_folder.h"
+#include "commands/render_options.h"
 #include "core/error.h"
+#include "interpolation/interpolator.h"
+#include "multimesh/multimesh.h"
 #include "output/contact_sheet.h"
-#include "render_options.h"
+#include "pipeline/key_drawings.h"
+#include "pipeline/scene_multimesh.h"
+#include "progress.h"
+#include "scene/scene.h"
 
 #include <array>
 #include <chrono>
@@ -24,7 +31,8 @@ constexpr const char* kUsage =
     "each key's drawing textured onto the deforming mesh, blended by the weights. Writes\n"
     "DIR/frame_NNNN.png (straight alpha) and DIR/contact_sheet.png.\n"
     "\n"
-    "  -o, --output DIR     folder for the frames, created if missing\n"
+    "  -o, --output DIR     folder for the frames, created if missing (and removed again if the\n"
+    "                       command fails)\n"
     "  --frames A:B         frames A to B inclusive (or one frame A); default all\n"
     "  --size WxH           picture size in pixels; default the drawings' size\n"
     "  --fps N              frame rate; default the scene's timeline's (24 without one)\n"
@@ -75,6 +83,12 @@ void playWithNeighbours(FrameStream& stream, std::array<int, 2> range, int neigh
   for (; next < window.size(); ++next) drawIfInRange(next);
 }
 
+// Where the multimesh came from, for the summary line.
+std::string describeSource(const SceneMultimesh& mesh) {
+  if (mesh.source != MeshSource::kBuilt) return mesh.file;
+  return mesh.comesh ? "built (with Comesh Optimization)" : "built (initial map)";
+}
+
 }  // namespace
 
 int runRender(const std::vector<std::string>& rawArgs) {
@@ -88,8 +102,7 @@ int runRender(const std::vector<std::string>& rawArgs) {
   const std::string scenePath = arguments.positional()[0];
   RenderOptions options = parseRenderOptions(arguments);
   const Scene scene = loadScene(scenePath);
-  std::vector<RgbaImage> drawings;
-  for (const KeySpec& key : scene.keys) drawings.push_back(readPng(key.drawing));
+  std::vector<RgbaImage> drawings = readKeyDrawings(scene);
   const Timeline timeline = options.fps ? withFps(scene.timeline, *options.fps) : scene.timeline;
   const int frameCount = timeline.frameCount();
   const std::array<int, 2> range = options.frames.value_or(std::array<int, 2>{0, frameCount - 1});
@@ -100,15 +113,18 @@ int runRender(const std::vector<std::string>& rawArgs) {
   contextOptions.validation = options.validation;
   contextOptions.device = options.device;
   const vk::VulkanContext context = openVulkan(contextOptions, "render");  // before the long work: fail fast
-  const fs::path dir(options.output);
-  std::error_code error;
-  fs::create_directories(dir, error);
-  if (error || !fs::is_directory(dir)) throw InputError("-o: cannot create the folder " + dir.string());
+  cli::OutputFolder folder(options.output, "-o");  // before the long work too
+  const fs::path& dir = folder.path();
 
   cli::Progress progress;
-  options.mesh.progressShare = 0.3;
   std::string source;
-  const Multimesh mesh = sceneMultimesh(scene, scenePath, options.mesh, progress, &source);
+  const std::shared_ptr<const Multimesh> played = [&] {  // the build's initial map and report let go here
+    const SceneMultimesh built =
+        sceneMultimesh(scene, options.mesh, [&](const std::string& stage, double fraction) { progress.update(stage, 0.3 * fraction); });
+    source = describeSource(built);
+    return built.multimesh;
+  }();
+  const Multimesh& mesh = *played;
   int canvasW = 0, canvasH = 0;
   for (const RgbaImage& d : drawings) {
     canvasW = std::max(canvasW, d.width);
@@ -169,6 +185,7 @@ int runRender(const std::vector<std::string>& rawArgs) {
   progress.finish();
   if (options.validation && !context.validationMessages().empty())
     throw std::runtime_error("render: the validation layer reported: " + context.validationMessages().front());
+  folder.keep();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   std::printf("%s: rendered frames %d..%d (%dx%d, %g fps timeline) on %s in %.2f s (%.1f frames/s); multimesh %s\n",
               scenePath.c_str(), range[0], range[1], size[0], size[1], timeline.fps(), context.deviceName().c_str(), seconds,

@@ -4,8 +4,8 @@
 
 #include "cli.h"
 #include "gpu/vulkan_context.h"
+#include "pipeline/scene_multimesh.h"
 #include "renderers/offscreen_renderer.h"
-#include "scene_mesh.h"
 
 #include <array>
 #include <optional>
@@ -22,7 +22,7 @@ struct RenderOptions {
   render::Overlays overlays;           // --wireframe, --cohesive, --features
   int onion = 0;                       // --onion N: neighbouring frames each side, 0..2
   int sheetEvery = 0;                  // --sheet-every K: every k-th frame on the sheet; 0 = at most 36 tiles
-  SceneMeshOptions mesh;               // --mesh FILE, --no-comesh
+  SceneMultimeshOptions mesh;          // --mesh FILE, --no-comesh
   vk::DevicePreference device = vk::DevicePreference::kAny;  // --device any|gpu|cpu
   bool validation = false;             // --validation: Khronos layer on, any message is an error
   int threads = 0;                     // --threads N: solver threads, 0 = all cores

@@ -1,4 +1,4 @@
-#include "render_options.h"
+#include "commands/render_options.h"
 
 #include "core/error.h"
 #include "gpu/vulkan_check.h"

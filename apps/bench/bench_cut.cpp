@@ -1,14 +1,10 @@
 // `inbetween bench cut`: the interpolation solver through a cut letting go, with H's factor
 // following the cohesive pairs by rank-one updates and without, one JSON line per case.
-#include "bench.h"
+#include "bench/bench.h"
 
-#include "cli.h"
-#include "core/error.h"
 #include "interpolation/interpolator.h"
 #include "progress.h"
 #include "testkit/shape_generators.h"
-
-#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -84,7 +80,7 @@ nlohmann::json benchCase(int vertices, bool update, int frames, int repeats, int
   SolverOptions options;
   options.threads = threads;
   options.updateFactor = update;
-  const auto before = cpuTicks();
+  const StealMeter steal;
   std::vector<CutSweep> runs;
   std::vector<double> msPerFrame, hardestMs;
   for (int k = 0; k < repeats; ++k) {
@@ -96,8 +92,7 @@ nlohmann::json benchCase(int vertices, bool update, int frames, int repeats, int
     hardestMs.push_back(runs.back().hardestMs);
   }
   const CutSweep& any = runs.front();
-  nlohmann::json out = {{"bench", "cut"},
-                        {"vertices", mesh.vertexCount()},
+  nlohmann::json out = {{"vertices", mesh.vertexCount()},
                         {"pairs", side - 1},
                         {"frames", frames},
                         {"update_factor", update},
@@ -111,19 +106,11 @@ nlohmann::json benchCase(int vertices, bool update, int frames, int repeats, int
                         {"hardest_frame_iterations", any.hardestIterations},
                         {"hardest_frame_factorizations", any.hardestFactorizations},
                         {"hardest_frame_ms", median(hardestMs)}};
-  if (const auto steal = stealPercent(before, cpuTicks())) out["steal_percent"] = *steal;
+  steal.addTo(out);
   return out;
 }
 
-}  // namespace
-
-int runBenchCut(const std::vector<std::string>& args) {
-  const cli::Arguments a("bench cut", args, {"sizes", "frames", "repeats", "threads"}, {"help"});
-  if (a.flag("help")) {
-    std::fputs(kUsage, stdout);
-    return 0;
-  }
-  if (!a.positional().empty()) throw InputError("bench cut: unexpected argument '" + a.positional()[0] + "'");
+void run(const cli::Arguments& a, const BenchOutput& output) {
   const std::vector<int> sizes = cli::integerList(a.value("sizes", "1k,10k,50k"), "sizes", 18, 2000000);
   const int frames = a.integer("frames", 50, 1, 100000);
   const int repeats = a.integer("repeats", 3, 1, 100);
@@ -133,10 +120,14 @@ int runBenchCut(const std::vector<std::string>& args) {
       cli::Progress progress;
       const nlohmann::json line = benchCase(vertices, update, frames, repeats, threads, progress);
       progress.finish();
-      std::printf("%s\n", line.dump().c_str());
-      std::fflush(stdout);
+      output.printLine(line);
     }
-  return 0;
+}
+
+}  // namespace
+
+Benchmark cutBenchmark() {
+  return {"cut", "the solver through a cut letting go", kUsage, {"sizes", "frames", "repeats", "threads"}, {}, run};
 }
 
 }  // namespace ib

@@ -1,14 +1,14 @@
 // `inbetween bench anim`: the frame stream (timeline, warm starts, dynamics) over bundled scenes,
 // one JSON line per scene.
-#include "bench.h"
+#include "bench/bench.h"
 
 #include "animation/frame_stream.h"
-#include "cli.h"
 #include "core/error.h"
+#include "interpolation/interpolator.h"
+#include "multimesh/multimesh.h"
+#include "pipeline/scene_multimesh.h"
 #include "progress.h"
-#include "scene_mesh.h"
-
-#include <nlohmann/json.hpp>
+#include "scene/scene.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -35,7 +35,13 @@ nlohmann::json playScene(const std::filesystem::path& file, bool comesh, int thr
   const std::string name = file.parent_path().filename().string();
   progress.update(name + ": building the multimesh", 0);
   const Scene scene = loadScene(file.string());
-  const Multimesh mesh = buildSceneMultimesh(scene, comesh, progress, name + ": ", 0);
+  SceneMultimeshOptions meshOptions;
+  meshOptions.useCache = false;  // from the drawings: a .ibmesh left in DIR must not change the figures
+  meshOptions.comesh = comesh;
+  const auto built = sceneMultimesh(scene, meshOptions, [&](const std::string& stage, double) {
+    progress.update(name + ": " + stage, 0);  // the bar shows the frames played
+  });
+  const Multimesh& mesh = *built.multimesh;
   SolverOptions options;
   options.threads = threads;
   FrameStream stream(mesh, scene.timeline, interpolationParams(scene.solver), options, scene.dynamics);
@@ -53,8 +59,7 @@ nlohmann::json playScene(const std::filesystem::path& file, bool comesh, int thr
                     (frame.index + 1.0) / stream.frameCount());
   }
   const int frames = stream.frameCount();
-  return {{"bench", "anim"},
-          {"scene", name},
+  return {{"scene", name},
           {"vertices", mesh.vertexCount()},
           {"keys", mesh.keyCount()},
           {"frames", frames},
@@ -66,15 +71,7 @@ nlohmann::json playScene(const std::filesystem::path& file, bool comesh, int thr
           {"max_deviation", deviation}};
 }
 
-}  // namespace
-
-int runBenchAnim(const std::vector<std::string>& args) {
-  const cli::Arguments a("bench anim", args, {"assets", "threads"}, {"help", "comesh"});
-  if (a.flag("help")) {
-    std::fputs(kUsage, stdout);
-    return 0;
-  }
-  if (!a.positional().empty()) throw InputError("bench anim: unexpected argument '" + a.positional()[0] + "'");
+void run(const cli::Arguments& a, const BenchOutput& output) {
   const std::filesystem::path assets = a.value("assets", INBETWEEN_ASSETS);
   const int threads = cli::integerList(a.value("threads", "0"), "threads", 0, 256).front();
   if (!std::filesystem::is_directory(assets)) throw InputError("bench anim: --assets: " + assets.string() + " is not a folder");
@@ -87,10 +84,14 @@ int runBenchAnim(const std::vector<std::string>& args) {
     cli::Progress progress;
     const nlohmann::json line = playScene(file, a.flag("comesh"), threads, progress);
     progress.finish();
-    std::printf("%s\n", line.dump().c_str());
-    std::fflush(stdout);
+    output.printLine(line);
   }
-  return 0;
+}
+
+}  // namespace
+
+Benchmark animBenchmark() {
+  return {"anim", "playing every bundled scene's timeline", kUsage, {"assets", "threads"}, {"comesh"}, run};
 }
 
 }  // namespace ib

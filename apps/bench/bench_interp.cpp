@@ -1,28 +1,22 @@
-#include "bench.h"
+// `inbetween bench interp`: the interpolation solver on strips built in code, one JSON line per
+// (vertices, keys) case.
+#include "bench/bench.h"
 
 #include "animation/warm_start.h"
-#include "cli.h"
-#include "core/error.h"
 #include "interpolation/interpolator.h"
 #include "testkit/reference_arap.h"
 #include "testkit/shape_generators.h"
-
-#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
-#include <optional>
-#include <sstream>
-#include <unistd.h>
 
 namespace ib {
 
 namespace {
 
-constexpr const char* kBenchUsage =
+constexpr const char* kUsage =
     "usage: inbetween bench interp [--sizes LIST] [--keys LIST] [--frames N] [--repeats N] [--threads N]\n"
     "                              [--no-baseline]\n"
     "\n"
@@ -86,10 +80,6 @@ int iterationsToEnergy(const std::vector<double>& history, double optimum, doubl
   return -1;
 }
 
-void progress(const std::string& text) {
-  if (isatty(STDERR_FILENO)) std::fprintf(stderr, "\r\033[K%s", text.c_str());
-}
-
 // One warm-started sweep of `frames` frames after a cold solve at s = 0.
 struct Sweep {
   double msPerFrame = 0, msPerIter = 0, maxMs = 0, itersPerFrame = 0, evaluationsPerFrame = 0, firstSolveMs = 0,
@@ -111,7 +101,7 @@ Sweep runSweep(const Multimesh& mesh, const InterpolationParams& params, const S
   double totalMs = 0, factorMs = 0;
   long iterations = 0, evaluations = 0;
   for (int f = 1; f <= frames; ++f) {
-    progress(label + ": frame " + std::to_string(f) + "/" + std::to_string(frames));
+    showStatus(label + ": frame " + std::to_string(f) + "/" + std::to_string(frames));
     const Eigen::VectorXd w = sweepWeights(keys, double(f) / frames);
     const auto frameStarted = Clock::now();  // the frame as a player runs it: predict, then solve
     const auto start = warmStart.predict(w);
@@ -195,16 +185,14 @@ nlohmann::json benchCase(int vertices, int keys, int frames, int repeats, int th
   Yardstick yardstick(mesh);
   const int referenceIterations = std::max(5, 200000 / mesh.vertexCount());
   std::vector<Sweep> runs;
-  const std::optional<CpuTicks> ticksBefore = cpuTicks();
+  const StealMeter steal;
   for (int r = 0; r < repeats; ++r) {
     runs.push_back(runSweep(mesh, params, options, keys, frames, label));
-    progress(label + ": yardstick");
+    showStatus(label + ": yardstick");
     runs.back().referenceMsPerIter = yardstick.msPerIteration(referenceIterations);
   }
-  const std::optional<CpuTicks> ticksAfter = cpuTicks();
   const Sweep& any = runs.front();
-  nlohmann::json out = {{"bench", "interp"},
-                        {"vertices", mesh.vertexCount()},
+  nlohmann::json out = {{"vertices", mesh.vertexCount()},
                         {"keys", keys},
                         {"ms_per_iter", median(runs, [](const Sweep& s) { return s.msPerIter; })},
                         {"iters_to_converge", any.itersPerFrame},
@@ -226,10 +214,10 @@ nlohmann::json benchCase(int vertices, int keys, int frames, int repeats, int th
     out["ms_per_iter"] = nullptr;
     out["iter_vs_reference"] = nullptr;
   }
-  if (const auto steal = stealPercent(ticksBefore, ticksAfter)) out["steal_percent"] = *steal;
+  steal.addTo(out);  // the sweeps and yardsticks only, not the baseline below
 
   if (baseline) {
-    progress(label + ": optimum and plain local-global baseline");
+    showStatus(label + ": optimum and plain local-global baseline");
     SolverOptions tight = options;
     tight.relativeTolerance = 1e-12;
     tight.maxIterations = 2000;
@@ -248,61 +236,25 @@ nlohmann::json benchCase(int vertices, int keys, int frames, int repeats, int th
     out["plain_iteration_cap"] = plainOptions.maxIterations;
     if (fast > 0 && slow > 0) out["iteration_ratio"] = double(slow) / fast;
   }
-  progress("");
+  showStatus("");
   return out;
 }
 
-}  // namespace
-
-std::optional<CpuTicks> cpuTicks() {
-  std::ifstream stat("/proc/stat");
-  std::string label;
-  long long fields[8] = {};  // user nice system idle iowait irq softirq steal
-  if (!(stat >> label) || label != "cpu") return std::nullopt;
-  for (long long& field : fields)
-    if (!(stat >> field)) return std::nullopt;
-  CpuTicks ticks;
-  for (long long field : fields) ticks.total += field;
-  ticks.steal = fields[7];
-  return ticks;
-}
-
-std::optional<double> stealPercent(const std::optional<CpuTicks>& before, const std::optional<CpuTicks>& after) {
-  if (!before || !after || after->total <= before->total) return std::nullopt;
-  return 100.0 * double(after->steal - before->steal) / double(after->total - before->total);
-}
-
-int runBench(const std::vector<std::string>& args) {
-  if (args.empty() || args[0] == "--help" || args[0] == "-h") {
-    std::fputs(kBenchUsage, args.empty() ? stderr : stdout);
-    return args.empty() ? 2 : 0;
-  }
-  if (args[0] == "comesh") return runBenchComesh(std::vector<std::string>(args.begin() + 1, args.end()));
-  if (args[0] == "anim") return runBenchAnim(std::vector<std::string>(args.begin() + 1, args.end()));
-#ifdef INBETWEEN_WITH_ENGINE
-  if (args[0] == "render") return runBenchRender(std::vector<std::string>(args.begin() + 1, args.end()));
-#endif
-  if (args[0] == "cut") return runBenchCut(std::vector<std::string>(args.begin() + 1, args.end()));
-  if (args[0] != "interp") throw InputError("bench: unknown case '" + args[0] + "' (available: interp, comesh, anim, render, cut)");
-  const cli::Arguments a("bench", std::vector<std::string>(args.begin() + 1, args.end()),
-                         {"sizes", "keys", "frames", "repeats", "threads"}, {"no-baseline", "help"});
-  if (a.flag("help")) {
-    std::fputs(kBenchUsage, stdout);
-    return 0;
-  }
-  if (!a.positional().empty()) throw InputError("bench: unexpected argument '" + a.positional()[0] + "'");
+void run(const cli::Arguments& a, const BenchOutput& output) {
   const std::vector<int> sizes = cli::integerList(a.value("sizes", "1k,10k,100k"), "sizes", 16, 2000000);
   const std::vector<int> keyCounts = cli::integerList(a.value("keys", "2,4"), "keys", 1, 4);
   const int frames = a.integer("frames", 24, 1, 100000);
   const int repeats = a.integer("repeats", 3, 1, 100);
   const int threads = a.integer("threads", 0, 0, 1024);
   for (int vertices : sizes)
-    for (int keys : keyCounts) {
-      const nlohmann::json line = benchCase(vertices, keys, frames, repeats, threads, !a.flag("no-baseline"));
-      std::printf("%s\n", line.dump().c_str());
-      std::fflush(stdout);
-    }
-  return 0;
+    for (int keys : keyCounts) output.printLine(benchCase(vertices, keys, frames, repeats, threads, !a.flag("no-baseline")));
+}
+
+}  // namespace
+
+Benchmark interpBenchmark() {
+  return {"interp", "the interpolation solver on strips built in code", kUsage,
+          {"sizes", "keys", "frames", "repeats", "threads"}, {"no-baseline"}, run};
 }
 
 }  // namespace ib

@@ -1,14 +1,11 @@
 // `inbetween bench render`: headless frames per second of the renderer (two keys' artwork blended
 // on a deforming strip, MSAA, read back to RGBA), one JSON line per mesh size.
-#include "bench.h"
+#include "bench/bench.h"
 
-#include "cli.h"
+#include "commands/render_options.h"
 #include "core/error.h"
-#include "render_options.h"
 #include "renderers/offscreen_renderer.h"
 #include "testkit/shape_generators.h"
-
-#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -87,21 +84,13 @@ nlohmann::json benchSize(const vk::VulkanContext& context, int triangles, const 
   for (int f = 0; f < frames; ++f) frame(warmup + f);
   while (renderer.pending() > 0) renderer.take();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return {{"bench", "render"},      {"device", context.deviceName()}, {"triangles", mesh.triangleCount()},
+  return {{"device", context.deviceName()}, {"triangles", mesh.triangleCount()},
           {"vertices", mesh.vertexCount()}, {"width", target.width},     {"height", target.height},
           {"samples", static_cast<int>(renderer.samples())}, {"frames", frames}, {"fps", frames / seconds},
           {"ms_per_frame", 1000 * seconds / frames}};
 }
 
-}  // namespace
-
-int runBenchRender(const std::vector<std::string>& args) {
-  const cli::Arguments a("bench render", args, {"triangles", "size", "frames", "samples", "device"}, {"help"});
-  if (a.flag("help")) {
-    std::fputs(kUsage, stdout);
-    return 0;
-  }
-  if (!a.positional().empty()) throw InputError("bench render: unexpected argument '" + a.positional()[0] + "'");
+void run(const cli::Arguments& a, const BenchOutput& output) {
   const std::vector<int> sizes = cli::integerList(a.value("triangles", "1k,10k"), "triangles", 16, 4000000);
   const std::array<int, 2> size = parseSize(a.value("size", "1280x720"), "--size");
   render::OffscreenOptions target;
@@ -116,11 +105,14 @@ int runBenchRender(const std::vector<std::string>& args) {
   else if (device == "cpu") options.device = vk::DevicePreference::kSoftware;
   else if (device != "any") throw InputError("--device: '" + device + "' is not any, gpu or cpu");
   const vk::VulkanContext context = openVulkan(options, "bench render");
-  for (int triangles : sizes) {
-    std::printf("%s\n", benchSize(context, triangles, target, frames).dump().c_str());
-    std::fflush(stdout);
-  }
-  return 0;
+  for (int triangles : sizes) output.printLine(benchSize(context, triangles, target, frames));
+}
+
+}  // namespace
+
+Benchmark renderBenchmark() {
+  return {"render", "headless rendering (frames per second)", kUsage, {"triangles", "size", "frames", "samples", "device"},
+          {}, run};
 }
 
 }  // namespace ib

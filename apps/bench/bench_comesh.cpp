@@ -1,18 +1,13 @@
 // `inbetween bench comesh`: Comesh Optimization on bundled scenes, one JSON line per case.
-#include "bench.h"
+#include "bench/bench.h"
 
-#include "cli.h"
 #include "comesh/comesh.h"
-#include "core/error.h"
 #include "meshing/multimesh_builder.h"
-
-#include <nlohmann/json.hpp>
 
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <unistd.h>
 
 namespace ib {
 
@@ -33,12 +28,8 @@ constexpr const char* kUsage =
 
 using Clock = std::chrono::steady_clock;
 
-void progress(const std::string& text) {
-  if (isatty(STDERR_FILENO)) std::fprintf(stderr, "\r\033[K%s", text.c_str());
-}
-
 nlohmann::json runCase(Scene scene, const std::string& label) {
-  progress(label + ": building the initial map");
+  showStatus(label + ": building the initial map");
   const auto started = Clock::now();
   const BuiltScene built = buildMultimesh(scene, MultimeshBuildOptions{});
   const double buildSeconds = std::chrono::duration<double>(Clock::now() - started).count();
@@ -46,12 +37,12 @@ nlohmann::json runCase(Scene scene, const std::string& label) {
   options.progress = [&](int outer, double energy) {
     char text[128];
     std::snprintf(text, sizeof text, "%s: outer iteration %d, energy %.6g", label.c_str(), outer, energy);
-    progress(text);
+    showStatus(text);
   };
   ComeshReport r;
   comeshOptimize(*built.multimesh, &built.boundary, options, &r);
-  progress("");
-  return {{"bench", "comesh"},           {"scene", label},
+  showStatus("");
+  return {{"scene", label},
           {"vertices_in", r.verticesIn}, {"vertices_out", r.verticesOut},
           {"keys", r.keys},              {"outer", r.outerIterations},
           {"inner", r.innerIterations},  {"flips", r.remesh.flips},
@@ -61,20 +52,7 @@ nlohmann::json runCase(Scene scene, const std::string& label) {
           {"build_seconds", buildSeconds}, {"energy_in", r.energyIn}, {"energy_out", r.energyOut}};
 }
 
-void print(const nlohmann::json& line) {
-  std::printf("%s\n", line.dump().c_str());
-  std::fflush(stdout);
-}
-
-}  // namespace
-
-int runBenchComesh(const std::vector<std::string>& args) {
-  const cli::Arguments a("bench comesh", args, {"sizes", "keys", "assets"}, {"help"});
-  if (a.flag("help")) {
-    std::fputs(kUsage, stdout);
-    return 0;
-  }
-  if (!a.positional().empty()) throw InputError("bench comesh: unexpected argument '" + a.positional()[0] + "'");
+void run(const cli::Arguments& a, const BenchOutput& output) {
   const std::vector<int> sizes = cli::integerList(a.value("sizes", "300,1k,17k,100k"), "sizes", 50, 1000000);
   const std::vector<int> keyCounts = cli::integerList(a.value("keys", "2,4,8,16"), "keys", 2, 16);
   const std::filesystem::path assets = a.value("assets", INBETWEEN_ASSETS);
@@ -85,15 +63,20 @@ int runBenchComesh(const std::vector<std::string>& args) {
   for (int vertices : sizes) {
     Scene scene = squareHexagon;
     scene.edgeLength = squareHexagon.edgeLength * std::sqrt(referenceVertices / vertices);
-    print(runCase(scene, "square-hexagon@" + std::to_string(vertices)));
+    output.printLine(runCase(scene, "square-hexagon@" + std::to_string(vertices)));
   }
   const Scene sequence = loadScene((assets / "star-sequence" / "scene.json").string());
   for (int keys : keyCounts) {
     Scene scene = sequence;
     scene.keys.resize(keys);
-    print(runCase(scene, "star-sequence@" + std::to_string(keys)));
+    output.printLine(runCase(scene, "star-sequence@" + std::to_string(keys)));
   }
-  return 0;
+}
+
+}  // namespace
+
+Benchmark comeshBenchmark() {
+  return {"comesh", "Comesh Optimization on bundled scenes", kUsage, {"sizes", "keys", "assets"}, {}, run};
 }
 
 }  // namespace ib

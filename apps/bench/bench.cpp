@@ -1,0 +1,92 @@
+#include "bench/bench.h"
+
+#include "core/error.h"
+
+#include <cstdio>
+#include <fstream>
+#include <unistd.h>
+
+namespace ib {
+
+void BenchOutput::printLine(nlohmann::json line) const {
+  line["bench"] = bench_;
+  line["arch"] = INBETWEEN_ARCH;
+  std::printf("%s\n", line.dump().c_str());
+  std::fflush(stdout);
+}
+
+StealMeter::StealMeter() : start_(read()) {}
+
+std::optional<StealMeter::Ticks> StealMeter::read() {
+  std::ifstream stat("/proc/stat");
+  std::string label;
+  long long fields[8] = {};  // user nice system idle iowait irq softirq steal
+  if (!(stat >> label) || label != "cpu") return std::nullopt;
+  for (long long& field : fields)
+    if (!(stat >> field)) return std::nullopt;
+  Ticks ticks;
+  for (long long field : fields) ticks.total += field;
+  ticks.steal = fields[7];
+  return ticks;
+}
+
+void StealMeter::addTo(nlohmann::json& line) const {
+  const std::optional<Ticks> now = read();
+  if (!start_ || !now || now->total <= start_->total) return;
+  line["steal_percent"] = 100.0 * double(now->steal - start_->steal) / double(now->total - start_->total);
+}
+
+void showStatus(const std::string& text) {
+  if (isatty(STDERR_FILENO)) std::fprintf(stderr, "\r\033[K%s", text.c_str());
+}
+
+namespace {
+
+std::vector<Benchmark> benchmarks() {
+  return {interpBenchmark(), comeshBenchmark(), animBenchmark(),
+#ifdef INBETWEEN_WITH_ENGINE
+          renderBenchmark(),
+#endif
+          cutBenchmark()};
+}
+
+std::string usage(const std::vector<Benchmark>& all) {
+  std::string out =
+      "usage: inbetween bench CASE [OPTIONS]\n"
+      "\n"
+      "Benchmarks; each prints one JSON object per case on its own line, with \"bench\" (the CASE)\n"
+      "and \"arch\" (the instruction set this inbetween was built for).\n"
+      "\n"
+      "cases:\n";
+  for (const Benchmark& b : all) out += "  " + std::string(b.name) + std::string(8 - std::string(b.name).size(), ' ') + b.summary + "\n";
+  return out + "\nSee `inbetween bench CASE --help` for a case's options and fields.\n";
+}
+
+}  // namespace
+
+int runBench(const std::vector<std::string>& args) {
+  const std::vector<Benchmark> all = benchmarks();
+  if (args.empty() || args[0] == "--help" || args[0] == "-h") {
+    std::fputs(usage(all).c_str(), args.empty() ? stderr : stdout);
+    return args.empty() ? 2 : 0;
+  }
+  const std::vector<std::string> rest(args.begin() + 1, args.end());
+  for (const Benchmark& b : all) {
+    if (args[0] != b.name) continue;
+    if (cli::printHelpIfAsked(rest, b.usage)) return 0;
+    const std::string command = "bench " + args[0];
+    const cli::Arguments arguments(command, rest, b.valueOptions, b.flagOptions);
+    if (!arguments.positional().empty())
+      throw InputError(command + ": unexpected argument '" + arguments.positional()[0] + "'");
+    b.run(arguments, BenchOutput(b.name));
+    return 0;
+  }
+#ifndef INBETWEEN_WITH_ENGINE
+  if (args[0] == "render") throw InputError("bench render: this inbetween was built without the engine (INBETWEEN_ENGINE=OFF)");
+#endif
+  std::string names;
+  for (const Benchmark& b : all) names += (names.empty() ? "" : ", ") + std::string(b.name);
+  throw InputError("bench: unknown case '" + args[0] + "' (available: " + names + ")");
+}
+
+}  // namespace ib

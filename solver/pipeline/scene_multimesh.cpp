@@ -1,0 +1,170 @@
+#include "pipeline/scene_multimesh.h"
+
+#include "comesh/comesh.h"
+#include "core/error.h"
+#include "meshing/multimesh_builder.h"
+#include "meshing/stiffness_paint.h"
+#include "multimesh/multimesh_io.h"
+#include "scene/scene.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <limits>
+#include <stdexcept>
+
+namespace ib {
+
+namespace fs = std::filesystem;
+
+SceneMultimesh::SceneMultimesh() = default;
+SceneMultimesh::~SceneMultimesh() = default;
+SceneMultimesh::SceneMultimesh(SceneMultimesh&&) noexcept = default;
+SceneMultimesh& SceneMultimesh::operator=(SceneMultimesh&&) noexcept = default;
+
+std::string cachedMeshPath(const std::string& scenePath) {
+  const fs::path scene(scenePath);
+  return (scene.parent_path() / scene.stem()).string() + ".ibmesh";
+}
+
+namespace {
+
+// Passes progress on with the fraction never smaller than the last one passed on: a build that
+// retries at a finer edge length meshes and maps again, and the bar then waits.
+class MonotoneProgress {
+ public:
+  explicit MonotoneProgress(const PipelineProgress& out) : out_(out) {}
+  void operator()(const std::string& stage, double fraction) {
+    done_ = std::max(done_, std::clamp(fraction, 0.0, 1.0));
+    if (out_) out_(stage, done_);
+  }
+
+ private:
+  const PipelineProgress& out_;
+  double done_ = 0;
+};
+
+// Share of the build (without Comesh) at the builder's stage: it reports each stage's own
+// fraction, tracing every key in [0, 0.4), meshing the reference key at 0.4, mapping every key in
+// [0.5, 1).
+double buildFraction(const std::string& stage, double fraction) {
+  if (stage.rfind("tracing", 0) == 0) return 0.4 * fraction;
+  if (stage.rfind("meshing", 0) == 0) return 0.4;
+  return 0.5 + 0.5 * fraction;
+}
+
+// Newer than the scene file, every drawing and the stiffness image.
+bool cacheIsCurrent(const Scene& scene, const fs::path& cache) {
+  std::error_code error;
+  const auto cacheTime = fs::last_write_time(cache, error);
+  if (error) return false;
+  std::vector<std::string> inputs{scene.file};
+  for (const KeySpec& key : scene.keys) inputs.push_back(key.drawing);
+  if (!scene.stiffness.image.empty()) inputs.push_back(scene.stiffness.image);
+  for (const std::string& input : inputs) {
+    const auto inputTime = fs::last_write_time(input, error);
+    if (error || inputTime > cacheTime) return false;
+  }
+  return true;
+}
+
+SceneMultimesh loaded(Multimesh mesh, MeshSource source, const std::string& file) {
+  SceneMultimesh out;
+  out.multimesh = std::make_shared<const Multimesh>(std::move(mesh));
+  out.source = source;
+  out.file = file;
+  return out;
+}
+
+SceneMultimesh build(const Scene& scene, const SceneMultimeshOptions& options, MonotoneProgress& progress) {
+  const double buildShare = options.comesh ? 0.3 : 1.0;  // of the whole call; Comesh takes the rest
+  MultimeshBuildOptions buildOptions;
+  buildOptions.progress = [&](const std::string& stage, double fraction) {
+    progress(stage, buildShare * buildFraction(stage, fraction));
+  };
+  BuiltScene built = buildMultimesh(scene, buildOptions);
+  SceneMultimesh out;
+  out.source = MeshSource::kBuilt;
+  out.shapes = std::move(built.shapes);
+  out.drawingSizes = std::move(built.drawingSizes);
+  out.edgeLength = built.edgeLength;
+  out.initial = std::make_shared<const Multimesh>(std::move(*built.multimesh));
+  out.multimesh = out.initial;
+  if (!options.comesh) return out;
+
+  const ComeshOptions* given = options.comeshOptions;
+  ComeshOptions comeshOptions = given ? *given : ComeshOptions{};
+  comeshOptions.progress = [&](int outer, double energy) {
+    if (given && given->progress) given->progress(outer, energy);
+    char stage[96];
+    std::snprintf(stage, sizeof stage, "comesh: outer iteration %d, energy %.6g", outer, energy);
+    progress(stage, buildShare + (1 - buildShare) * outer / std::max(1, comeshOptions.outerIterations));
+  };
+  auto report = std::make_shared<ComeshReport>();
+  Multimesh optimized = comeshOptimize(*out.initial, &built.boundary, comeshOptions, report.get());
+  // Flips, splits and collapses made new triangles: paint them again from the scene.
+  paintStiffness(optimized, scene.stiffness, scene.solver.kappa);
+  try {
+    optimized.validate();
+  } catch (const InputError& e) {  // the input was fine: a broken result is our fault (exit 1)
+    throw std::runtime_error(std::string("Comesh Optimization produced an invalid multimesh: ") + e.what());
+  }
+  out.multimesh = std::make_shared<const Multimesh>(std::move(optimized));
+  out.comesh = std::move(report);
+  return out;
+}
+
+}  // namespace
+
+SceneMultimesh sceneMultimesh(const Scene& scene, const SceneMultimeshOptions& options, const PipelineProgress& progress) {
+  MonotoneProgress report(progress);
+  const int keys = static_cast<int>(scene.keys.size());
+  if (!options.meshFile.empty()) {
+    report("loading " + options.meshFile, 0);
+    Multimesh mesh = loadMultimesh(options.meshFile);
+    if (mesh.keyCount() != keys)
+      throw InputError(options.meshFile + ": has " + std::to_string(mesh.keyCount()) + " keys but " + scene.file +
+                       " has " + std::to_string(keys));
+    report("multimesh loaded", 1);
+    return loaded(std::move(mesh), MeshSource::kFile, options.meshFile);
+  }
+  const std::string cache = cachedMeshPath(scene.file);
+  if (options.useCache && cacheIsCurrent(scene, cache)) {
+    try {
+      report("loading " + cache, 0);
+      Multimesh mesh = loadMultimesh(cache);
+      if (mesh.keyCount() == keys) {
+        report("multimesh loaded", 1);
+        return loaded(std::move(mesh), MeshSource::kCache, cache);
+      }
+    } catch (const InputError&) {  // a broken cache is rebuilt, not an error
+    }
+  }
+  SceneMultimesh out = build(scene, options, report);
+  report("multimesh built", 1);
+  return out;
+}
+
+std::vector<int> featureVertices(const Scene& scene, const Multimesh& mesh) {
+  std::vector<int> out;
+  for (int k = 0; k < static_cast<int>(scene.keys.size()) && k < mesh.keyCount(); ++k) {
+    const Eigen::MatrixX2d X = mesh.keyPositions(k);
+    for (const auto& [name, point] : scene.keys[k].features) {
+      int best = -1;
+      double bestDistance = std::numeric_limits<double>::infinity();
+      for (int v : mesh.boundaryVertices(k)) {
+        const double d = (X.row(v).transpose() - point).squaredNorm();
+        if (d < bestDistance) {
+          bestDistance = d;
+          best = v;
+        }
+      }
+      if (best >= 0) out.push_back(best);
+    }
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+}  // namespace ib
