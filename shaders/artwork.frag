@@ -7,7 +7,7 @@
 // averaging them in would show a hairline where the shape is whole. The colour stays the keys'
 // colours weighted by w_k alpha_k. Away from cuts (seam = 0) this is the plain weighted blend.
 // seam is 1 over the triangles along a glued cut and falls to 0 across the next ring of
-// triangles (render::weldSeams), so the opacity returns continuously to the plain blend.
+// triangles (render::weldCuts), so the opacity returns continuously to the plain blend.
 #extension GL_GOOGLE_include_directive : require
 #include "artwork_push.glsl"
 

@@ -8,7 +8,7 @@
 // fragment when fewer keys are in play (about 1.4x faster on lavapipe for two keys than eight).
 
 layout(location = 0) in vec2 position;     // drawing pixels, y down
-layout(location = 1) in float seamClosure;  // 1 on a glued cut, 0 away from cuts (render::weldSeams)
+layout(location = 1) in float seamClosure;  // 1 on a glued cut, 0 away from cuts (render::weldCuts)
 layout(std430, set = 0, binding = 1) readonly buffer KeyUVs { vec2 keyUV[]; };  // [vertex * keyCount + key]
 
 layout(location = 0) out vec2 uv[MAX_ACTIVE];

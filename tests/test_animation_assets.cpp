@@ -28,7 +28,7 @@ TEST_CASE("animation: every bundled asset plays its timeline with finite frames 
       const AnimationFrame frame = stream.next();
       INFO("frame " << frame.index);
       REQUIRE(frame.x.allFinite());
-      REQUIRE(frame.activePairs.size() == pairs);
+      REQUIRE(frame.heldPairs.size() == pairs);
       CHECK(frame.deviation < 0.5);
       // A key mark that falls on this frame: the frame is that key, where it was drawn.
       for (const TimelineMark& mark : scene.timeline.marks()) {
@@ -90,7 +90,7 @@ TEST_CASE("interpolation: on every bundled asset, halving a step in w halves the
         if (whole < 2e-4 * size) continue;  // too small a move for the ratio to mean anything
         const double half = std::max(largestMove(frames[k].x, frames[k + 1].x), largestMove(frames[k + 1].x, frames[k + 2].x));
         INFO("double step " << k / 2 << ": moves " << whole / size << " of the size, its larger half " << half / whole);
-        if (frames[k].activePairs != frames[k + 1].activePairs || frames[k + 1].activePairs != frames[k + 2].activePairs) {
+        if (frames[k].heldPairs != frames[k + 1].heldPairs || frames[k + 1].heldPairs != frames[k + 2].heldPairs) {
           largestRelease = std::max(largestRelease, half / whole);
           continue;
         }

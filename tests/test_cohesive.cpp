@@ -46,8 +46,8 @@ double pairEnergy(double alpha, const Eigen::Vector2d& jump) {
   x.row(2) += jump.transpose();
   x.row(3) += jump.transpose();
   Eigen::MatrixX2d gradient = Eigen::MatrixX2d::Zero(6, 2);
-  std::vector<char> active;
-  return energy.evaluate(x, Eigen::VectorXd::Ones(1), gradient, active);
+  std::vector<char> held;
+  return energy.evaluate(x, Eigen::VectorXd::Ones(1), gradient, held);
 }
 
 }  // namespace
@@ -74,14 +74,14 @@ TEST_CASE("cohesive: a solve reports as holding exactly the pairs that are still
   for (int k = 1; k <= 45; ++k) {
     const double s = k / 50.0;
     r = solver.solve(Eigen::Vector2d(1 - s, s), &r.x);
-    REQUIRE(r.activePairs.size() == seam.size());
+    REQUIRE(r.heldPairs.size() == seam.size());
     for (size_t j = 0; j < seam.size(); ++j) {
       const CohesivePair& p = seam[j];
       const double gap = std::max((r.x.row(p.a) - r.x.row(p.c)).norm(), (r.x.row(p.b) - r.x.row(p.d)).norm()) / f.size;
       INFO("s = " << s << ", pair " << j << ": gap " << gap);
-      REQUIRE(bool(r.activePairs[j]) == (gap < 1e-2));
+      REQUIRE(bool(r.heldPairs[j]) == (gap < 1e-2));
     }
-    lastHolding = std::count(r.activePairs.begin(), r.activePairs.end(), 1);
+    lastHolding = std::count(r.heldPairs.begin(), r.heldPairs.end(), 1);
     if (s <= 0.3) REQUIRE(lastHolding == static_cast<long>(seam.size()));
   }
   REQUIRE(lastHolding < static_cast<long>(seam.size()));
@@ -135,11 +135,11 @@ TEST_CASE("cohesive: a clamped pair costs tau and exerts no force") {
   x.row(2) += Eigen::RowVector2d(0, 1);  // far apart: l/3 d >> tau
   x.row(3) += Eigen::RowVector2d(0, 1);
   Eigen::MatrixX2d gradient = Eigen::MatrixX2d::Zero(6, 2);
-  std::vector<char> active;
+  std::vector<char> held;
   const double w = 0.3;
-  REQUIRE(energy.evaluate(x, Eigen::VectorXd::Constant(1, w), gradient, active) == Approx(w * 0.5));
+  REQUIRE(energy.evaluate(x, Eigen::VectorXd::Constant(1, w), gradient, held) == Approx(w * 0.5));
   REQUIRE(gradient.norm() == 0.0);
-  REQUIRE(active[0] == 0);
+  REQUIRE(held[0] == 0);
 }
 
 TEST_CASE("cohesive: the frame where a cut lets go converges in a few dozen iterations, also with stiff pairs") {

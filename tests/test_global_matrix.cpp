@@ -38,13 +38,13 @@ TEST_CASE("global matrix: translations are in the kernel of the ARAP and cohesiv
   std::uniform_real_distribution<double> spring(0.5, 2.0);
   Eigen::VectorXd springs(g.n);
   for (int v = 0; v < g.n; ++v) springs(v) = spring(random);
-  const std::vector<char> active(g.cohesive.terms().size(), 1);
-  REQUIRE(!active.empty());
+  const std::vector<char> held(g.cohesive.terms().size(), 1);
+  REQUIRE(!held.empty());
   const Eigen::VectorXd w = Eigen::Vector2d(0.4, 0.6);
   for (bool withNonOverlap : {false, true}) {
     INFO("non-overlap " << withNonOverlap);
     auto H = g.make(0.25, withNonOverlap);
-    H->factorize({w, springs, active});
+    H->factorize({w, springs, held});
     Eigen::VectorXd diagonal = springs.array() + 0.25;
     if (withNonOverlap)
       for (int v : g.nonOverlap.allBoundaryVertices()) diagonal(v) += g.nonOverlap.stiffness();
@@ -63,38 +63,38 @@ TEST_CASE("global matrix: translations are in the kernel of the ARAP and cohesiv
 TEST_CASE("global matrix: the factor models a frame only near the weights, springs and pairs it was built for") {
   GluedSquaresH g;
   auto H = g.make(1e-3, false);
-  const std::vector<char> active(g.cohesive.terms().size(), 1);
-  std::vector<char> released = active;
+  const std::vector<char> held(g.cohesive.terms().size(), 1);
+  std::vector<char> released = held;
   released.front() = 0;
   const Eigen::VectorXd none;
   const Eigen::VectorXd springs = Eigen::VectorXd::Constant(g.n, 1.0);
   const Eigen::VectorXd w0 = Eigen::Vector2d(0.5, 0.5), near = Eigen::Vector2d(0.2, 0.8), far = Eigen::Vector2d(1, 0);
-  CHECK_FALSE(H->models({w0, none, active}, 1.0));  // nothing factorized yet
-  H->factorize({w0, none, active});
-  CHECK(H->models({w0, none, active}, 1.0));
-  CHECK(H->models({near, none, active}, 1.0));       // |w - w0|_1 = 0.6
-  CHECK_FALSE(H->models({near, none, active}, 0.5));
-  CHECK_FALSE(H->models({far, none, active}, 0.5)); // |w - w0|_1 = 1
-  CHECK(H->models({w0, none, active}, 0.0));          // distance 0: the very same weights only
-  CHECK_FALSE(H->models({near, none, active}, 0.0));
+  CHECK_FALSE(H->models({w0, none, held}, 1.0));  // nothing factorized yet
+  H->factorize({w0, none, held});
+  CHECK(H->models({w0, none, held}, 1.0));
+  CHECK(H->models({near, none, held}, 1.0));       // |w - w0|_1 = 0.6
+  CHECK_FALSE(H->models({near, none, held}, 0.5));
+  CHECK_FALSE(H->models({far, none, held}, 0.5)); // |w - w0|_1 = 1
+  CHECK(H->models({w0, none, held}, 0.0));          // distance 0: the very same weights only
+  CHECK_FALSE(H->models({near, none, held}, 0.0));
   CHECK_FALSE(H->models({w0, none, released}, 1.0));
-  CHECK_FALSE(H->models({w0, springs, active}, 1.0)); // springs where H has none
-  CHECK(H->active() == active);
+  CHECK_FALSE(H->models({w0, springs, held}, 1.0)); // springs where H has none
+  CHECK(H->held() == held);
 
-  H->factorize({w0, springs, active});
-  CHECK(H->models({w0, Eigen::VectorXd(springs * 1.05), active}, 1.0));
-  CHECK_FALSE(H->models({w0, Eigen::VectorXd(springs * 1.5), active}, 1.0));
-  CHECK_FALSE(H->models({w0, none, active}, 1.0));
+  H->factorize({w0, springs, held});
+  CHECK(H->models({w0, Eigen::VectorXd(springs * 1.05), held}, 1.0));
+  CHECK_FALSE(H->models({w0, Eigen::VectorXd(springs * 1.5), held}, 1.0));
+  CHECK_FALSE(H->models({w0, none, held}, 1.0));
   H->invalidate();
-  CHECK_FALSE(H->models({w0, springs, active}, 1.0));
+  CHECK_FALSE(H->models({w0, springs, held}, 1.0));
 }
 
 TEST_CASE("global matrix: updating the factor for pairs that let go or engage solves as a factorization with those pairs does") {
   // Large enough that a few rank-one updates cost less than a factorization.
   GluedSquaresH g(30);
-  const std::vector<char> active(g.cohesive.terms().size(), 1);
-  REQUIRE(active.size() >= 20);
-  std::vector<char> released = active;  // every fifth pair lets go
+  const std::vector<char> held(g.cohesive.terms().size(), 1);
+  REQUIRE(held.size() >= 20);
+  std::vector<char> released = held;  // every fifth pair lets go
   for (size_t j = 0; j < released.size(); j += 5) released[j] = 0;
   const Eigen::VectorXd none;
   const Eigen::VectorXd w = Eigen::Vector2d(0.7, 0.3);
@@ -109,11 +109,11 @@ TEST_CASE("global matrix: updating the factor for pairs that let go or engage so
   };
   auto updated = g.make(1e-3, false);
   auto fresh = g.make(1e-3, false);
-  CHECK_THROWS_AS(updated->updateActive(released), std::logic_error);  // nothing factorized yet
-  updated->factorize({w, none, active});
+  CHECK_THROWS_AS(updated->updateHeld(released), std::logic_error);  // nothing factorized yet
+  updated->factorize({w, none, held});
   const Eigen::MatrixX2d before = solved(*updated);
-  REQUIRE(updated->updateActive(released));
-  CHECK(updated->active() == released);
+  REQUIRE(updated->updateHeld(released));
+  CHECK(updated->held() == released);
   CHECK(updated->models({w, none, released}, 0.0));
   fresh->factorize({w, none, released});
   // Both factors are single precision; the seam's springs (lambda l / 3) make H stiff along it.
@@ -121,6 +121,6 @@ TEST_CASE("global matrix: updating the factor for pairs that let go or engage so
   CHECK((solved(*updated) - expected).norm() < 1e-4 * expected.norm());
   // Letting go changes the solution by 0.5% here: 50 times the tolerance above.
   CHECK((before - expected).norm() > 2e-3 * expected.norm());
-  REQUIRE(updated->updateActive(active));
+  REQUIRE(updated->updateHeld(held));
   CHECK((solved(*updated) - before).norm() < 1e-4 * before.norm());
 }

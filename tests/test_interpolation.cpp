@@ -198,8 +198,8 @@ TEST_CASE("interpolation: out-of-range parameters name the parameter") {
   o.maxIterations = 0;
   REQUIRE_THROWS_WITH(Interpolator(f.mesh, {}, o), Catch::Contains("maxIterations"));
   o = {};
-  o.staleActiveIterations = 0;
-  REQUIRE_THROWS_WITH(Interpolator(f.mesh, {}, o), Catch::Contains("staleActiveIterations"));
+  o.staleHeldIterations = 0;
+  REQUIRE_THROWS_WITH(Interpolator(f.mesh, {}, o), Catch::Contains("staleHeldIterations"));
   Multimesh empty(4, {{0, 1, 2}, {0, 2, 3}});
   REQUIRE_THROWS_WITH(Interpolator(empty, {}, SolverOptions{}), Catch::Contains("m = 0"));
 }

@@ -120,7 +120,7 @@ TEST_CASE("render: every bundled cut glued in an inbetween shows no seam (alpha 
         w[k] = wk;
         x = interpolator.solve(w, &glued).x;  // from key k, as a stream leaving it would
         widest = 0;
-        for (const Edge& e : art.seams.partners) widest = std::max(widest, (x.row(e[0]) - x.row(e[1])).norm());
+        for (const Edge& e : art.cutSides.partners) widest = std::max(widest, (x.row(e[0]) - x.row(e[1])).norm());
       }
       INFO(file << " at w = " << w.transpose() << ": cut gaps up to " << widest << " px");
       REQUIRE(widest < 0.25);

@@ -54,12 +54,12 @@ TEST_CASE("solver: with cohesive terms the safeguarded solver never ends worse t
 }
 
 TEST_CASE("solver: the fixed-matrix formulation reaches the paper's per-iteration-refactorized minimizer") {
-  // Anisotropic P (alpha != 1/2) and active cohesive pairs: the paper puts P in the global
+  // Anisotropic P (alpha != 1/2) and held pairs: the paper puts P in the global
   // matrix and refactorizes every iteration; we keep H fixed and move P into the local step.
   const auto f = test::gluedSquares(6, 1.0, 0.3);
   InterpolationParams p;
   p.cohesive.alpha = 0.2;
-  p.cohesive.tau = 1e9;  // every pair active in both solvers
+  p.cohesive.tau = 1e9;  // every pair held in both solvers
   SolverOptions o;
   o.relativeTolerance = 1e-11;
   o.maxIterations = 5000;

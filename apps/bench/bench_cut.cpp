@@ -22,7 +22,7 @@ constexpr const char* kUsage =
     "One JSON line per (vertices, update_factor):\n"
     "  update_factor         true: H's factor follows pairs that engage or let go by rank-one\n"
     "                        updates (SolverOptions::updateFactor); false: H is refactorized after\n"
-    "                        staleActiveIterations iterations with other pairs than its own\n"
+    "                        staleHeldIterations iterations with other pairs than its own\n"
     "  ms_per_frame          mean wall time of the sweep's frames (the cold start excluded)\n"
     "  hardest_frame         the frame with the most iterations (where most pairs let go), and its\n"
     "                        hardest_frame_iterations, hardest_frame_ms, hardest_frame_factorizations\n"

@@ -7,6 +7,7 @@
 #include "interpolation/interpolator.h"
 #include "multimesh/multimesh.h"
 #include "output/contact_sheet.h"
+#include "output/onion_window.h"
 #include "pipeline/key_drawings.h"
 #include "pipeline/scene_multimesh.h"
 #include "progress.h"
@@ -18,7 +19,6 @@
 #include <cstdio>
 #include <deque>
 #include <filesystem>
-#include <functional>
 
 namespace ib {
 
@@ -60,27 +60,6 @@ std::string framePath(const fs::path& dir, int frame) {
   char name[32];
   std::snprintf(name, sizeof name, "frame_%04d.png", frame);
   return (dir / name).string();
-}
-
-// Solves the stream's frames in order (dynamics and warm starts need every earlier frame) and
-// calls draw(window, at) for each frame in `range` (inclusive) once the `neighbours` frames after
-// it are solved too; window[at] is the frame, with up to `neighbours` solved frames on each side.
-void playWithNeighbours(FrameStream& stream, std::array<int, 2> range, int neighbours,
-                        const std::function<void(const std::deque<AnimationFrame>&, size_t)>& draw) {
-  std::deque<AnimationFrame> window;
-  size_t next = 0;  // index into window of the next frame to draw
-  auto drawIfInRange = [&](size_t at) {
-    if (window[at].index >= range[0] && window[at].index <= range[1]) draw(window, at);
-  };
-  while (!stream.done()) {
-    AnimationFrame frame = stream.next();
-    if (frame.index > range[1] + neighbours) break;
-    if (frame.index < range[0] - neighbours) continue;
-    window.push_back(std::move(frame));
-    for (; next < window.size() && window[next].index + neighbours <= window.back().index; ++next) drawIfInRange(next);
-    for (; next > static_cast<size_t>(neighbours); --next) window.pop_front();  // no longer anyone's neighbour
-  }
-  for (; next < window.size(); ++next) drawIfInRange(next);
 }
 
 // Where the multimesh came from, for the summary line.
@@ -158,27 +137,16 @@ int runRender(const std::vector<std::string>& rawArgs) {
     progress.update("rendering frame " + std::to_string(f) + " (" + std::to_string(written) + " of " + std::to_string(rendered) + ")",
                     0.3 + 0.7 * written / rendered);
   };
-  auto draw = [&](const std::deque<AnimationFrame>& window, size_t at) {  // window[at], neighbours as onion skins
+  render::OnionStyle onion;
+  onion.neighbours = options.onion;
+  auto draw = [&](const std::deque<AnimationFrame>& window, size_t at) {
     const AnimationFrame& frame = window[at];
-    render::FrameDraw request;
-    request.positions = &frame.x;
-    request.weights = frame.weights;
-    request.holding = &frame.activePairs;
-    request.view = view;
-    request.overlays = options.overlays;
-    for (int d = 1; d <= options.onion; ++d) {
-      const float opacity = 0.35f / d;
-      const auto skin = [&](const AnimationFrame& f, std::array<float, 3> tint) {
-        return render::OnionSkin{&f.x, f.weights, tint, opacity, &f.activePairs};
-      };
-      if (at >= static_cast<size_t>(d)) request.onion.push_back(skin(window[at - d], {1.0f, 0.45f, 0.45f}));
-      if (at + d < window.size()) request.onion.push_back(skin(window[at + d], {0.45f, 1.0f, 0.45f}));
-    }
+    const render::FrameDraw request = render::frameWithOnionSkins(window, at, onion, view, options.overlays);
     renderer.submit(request);
     inFlight.push_back(frame.index);
     while (static_cast<int>(inFlight.size()) > 2) collect();
   };
-  playWithNeighbours(stream, range, options.onion, draw);
+  render::playWithNeighbours(stream, range, options.onion, draw);
   while (!inFlight.empty()) collect();
   const std::string sheetPath = (dir / "contact_sheet.png").string();
   writePng(sheetPath, render::contactSheet(tiles, {}));

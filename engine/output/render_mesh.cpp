@@ -11,8 +11,8 @@ namespace ib::render {
 
 namespace {
 
-Seams seamsOf(const Multimesh& mesh) {
-  std::map<std::array<int, 4>, int> pairs;  // pair -> its index in Seams::pairs
+CutSides cutSidesOf(const Multimesh& mesh) {
+  std::map<std::array<int, 4>, int> pairs;  // pair -> its index in CutSides::pairs
   std::vector<std::array<int, 4>> terms;
   std::set<Edge> partners;
   for (int k = 0; k < mesh.keyCount(); ++k)
@@ -22,7 +22,7 @@ Seams seamsOf(const Multimesh& mesh) {
       for (const Edge& e : {Edge{p.a, p.c}, Edge{p.b, p.d}})
         if (e[0] != e[1]) partners.insert({std::min(e[0], e[1]), std::max(e[0], e[1])});
     }
-  Seams out;
+  CutSides out;
   std::vector<char> onCut(mesh.vertexCount(), 0);
   for (auto& [p, index] : pairs) {
     index = static_cast<int>(out.pairs.size());
@@ -47,7 +47,7 @@ Seams seamsOf(const Multimesh& mesh) {
 }
 
 // 1 at gaps (target pixels) up to `glued`, 0 from `open` on, linear in between.
-double closureAt(double gap, const SeamWeldOptions& options) {
+double closureAt(double gap, const CutWeldOptions& options) {
   return std::clamp((options.open - gap) / (options.open - options.glued), 0.0, 1.0);
 }
 
@@ -74,7 +74,7 @@ RenderMesh renderMeshOf(const Multimesh& mesh, std::vector<RgbaImage> artwork, s
     }
     out.cohesiveEdges.push_back(std::move(cohesive));
   }
-  out.seams = seamsOf(mesh);
+  out.cutSides = cutSidesOf(mesh);
   std::set<Edge> edges;
   for (const Triangle& t : out.triangles)
     for (int e = 0; e < 3; ++e) edges.insert({std::min(t[e], t[(e + 1) % 3]), std::max(t[e], t[(e + 1) % 3])});
@@ -86,36 +86,36 @@ RenderMesh renderMeshOf(const Multimesh& mesh, std::vector<RgbaImage> artwork, s
   return out;
 }
 
-SeamWeld weldSeams(const Eigen::MatrixX2d& x, const Seams& seams, double pixelsPerUnit, const SeamWeldOptions& options,
-                   const std::vector<char>* holding) {
+CutWeld weldCuts(const Eigen::MatrixX2d& x, const CutSides& cutSides, double pixelsPerUnit, const CutWeldOptions& options,
+                   const std::vector<char>* heldPairs) {
   if (!(options.glued >= 0 && options.open > options.glued))
-    throw std::invalid_argument("render: seam welding needs 0 <= glued < open pixels");
-  if (!(pixelsPerUnit > 0 && std::isfinite(pixelsPerUnit))) throw std::invalid_argument("render: seam welding needs a positive scale");
-  if (holding && holding->size() != seams.pairOfTerm.size())
-    throw std::invalid_argument("render: " + std::to_string(holding->size()) + " holding flags for " +
-                     std::to_string(seams.pairOfTerm.size()) + " cohesive pairs");
-  if (holding && seams.pairPartners.size() != seams.pairs.size())
-    throw std::invalid_argument("render: holding flags need seams with pairPartners (renderMeshOf's)");
+    throw std::invalid_argument("render: cut welding needs 0 <= glued < open pixels");
+  if (!(pixelsPerUnit > 0 && std::isfinite(pixelsPerUnit))) throw std::invalid_argument("render: cut welding needs a positive scale");
+  if (heldPairs && heldPairs->size() != cutSides.pairOfTerm.size())
+    throw std::invalid_argument("render: " + std::to_string(heldPairs->size()) + " held-pair flags for " +
+                     std::to_string(cutSides.pairOfTerm.size()) + " cohesive pairs");
+  if (heldPairs && cutSides.pairPartners.size() != cutSides.pairs.size())
+    throw std::invalid_argument("render: held-pair flags need cutSides with pairPartners (renderMeshOf's)");
   const Eigen::Index n = x.rows();
-  SeamWeld out{x, std::vector<float>(n, 0.0f)};
-  if (seams.pairs.empty()) return out;
-  std::vector<char> held(seams.pairs.size(), 0), heldPartner(seams.partners.size(), 0);
-  for (size_t t = 0; holding && t < holding->size(); ++t)
-    if ((*holding)[t]) held[seams.pairOfTerm[t]] = 1;
-  for (size_t j = 0; j < seams.pairs.size(); ++j) {
-    const CohesivePair& p = seams.pairs[j];
+  CutWeld out{x, std::vector<float>(n, 0.0f)};
+  if (cutSides.pairs.empty()) return out;
+  std::vector<char> held(cutSides.pairs.size(), 0), heldPartner(cutSides.partners.size(), 0);
+  for (size_t t = 0; heldPairs && t < heldPairs->size(); ++t)
+    if ((*heldPairs)[t]) held[cutSides.pairOfTerm[t]] = 1;
+  for (size_t j = 0; j < cutSides.pairs.size(); ++j) {
+    const CohesivePair& p = cutSides.pairs[j];
     const double gap = pixelsPerUnit * std::max((x.row(p.a) - x.row(p.c)).norm(), (x.row(p.b) - x.row(p.d)).norm());
     const float c = held[j] ? 1.0f : static_cast<float>(closureAt(gap, options));
     for (int v : {p.a, p.b, p.c, p.d}) out.closure[v] = std::max(out.closure[v], c);
     if (held[j])
-      for (int e : seams.pairPartners[j])
+      for (int e : cutSides.pairPartners[j])
         if (e >= 0) heldPartner[e] = 1;
   }
-  for (const Edge& e : seams.ring) out.closure[e[0]] = std::max(out.closure[e[0]], out.closure[e[1]]);
+  for (const Edge& e : cutSides.ring) out.closure[e[0]] = std::max(out.closure[e[0]], out.closure[e[1]]);
   Eigen::MatrixX2d pull = Eigen::MatrixX2d::Zero(n, 2);  // sum_v c_uv (v - u) per vertex u
   Eigen::VectorXd pulls = Eigen::VectorXd::Zero(n);       // sum_v c_uv
-  for (size_t k = 0; k < seams.partners.size(); ++k) {
-    const Edge& e = seams.partners[k];
+  for (size_t k = 0; k < cutSides.partners.size(); ++k) {
+    const Edge& e = cutSides.partners[k];
     const Eigen::RowVector2d d = x.row(e[1]) - x.row(e[0]);
     const double c = heldPartner[k] ? 1.0 : closureAt(pixelsPerUnit * d.norm(), options);
     pull.row(e[0]) += c * d;

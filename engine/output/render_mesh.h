@@ -12,13 +12,13 @@
 
 namespace ib::render {
 
-using Edge = std::array<int, 2>;
+using Edge = ib::Edge;
 
 // The cuts of a multimesh: the cohesive pairs of all keys, and the vertex pairs they collocate.
-struct Seams {
+struct CutSides {
   std::vector<CohesivePair> pairs;  // every key's C_i, each pair once
   std::vector<int> pairOfTerm;      // [term]: index into pairs of each key's pair, in the solver's
-                                    // order (key 0's pairs C_0, then C_1, ...: activePairs)
+                                    // order (key 0's pairs C_0, then C_1, ...: heldPairs)
   std::vector<Edge> partners;       // {a, c} and {b, d} of every pair where the two differ, each once
   std::vector<std::array<int, 2>> pairPartners;  // [pair]: indices into partners of its {a, c} and
                                                  // {b, d}, -1 where the two are one vertex
@@ -32,7 +32,7 @@ struct RenderMesh {
   std::vector<RgbaImage> artwork;                // [key]: the drawing, straight alpha
   std::vector<Edge> edges;                       // every mesh edge once (wireframe)
   std::vector<std::vector<Edge>> cohesiveEdges;  // [key]: both edges of each of C_i's pairs
-  Seams seams;                                   // every key's cohesive pairs, for weldSeams
+  CutSides cutSides;                             // every key's cohesive pairs, for weldCuts
   std::vector<int> features;                     // vertices marked as features
 };
 
@@ -44,23 +44,23 @@ RenderMesh renderMeshOf(const Multimesh& mesh, std::vector<RgbaImage> artwork, s
 // Where the solver glues a cut, its two sides lie within a small fraction of a pixel of each other,
 // and the keys that draw the cut open have antialiased, partly transparent texels along it. Drawn
 // as they are, both would show as a hairline across a shape that is whole: MSAA samples falling
-// in the sliver between the sides, and the open keys' alpha blended in. weldSeams closes gaps
+// in the sliver between the sides, and the open keys' alpha blended in. weldCuts closes gaps
 // narrower than a pixel and says, per vertex, how closed its cut is, so that the artwork shader
 // takes the opacity across it from the keys that draw it whole (shaders/artwork.frag).
 // Distances are in target pixels, so a gap the picture can show is never welded shut, at any zoom.
-struct SeamWeldOptions {
-  double glued = 0.5;  // target pixels: seam partners at most this far apart are welded (closure 1)
+struct CutWeldOptions {
+  double glued = 0.5;  // target pixels: cut partners at most this far apart are welded (closure 1)
   double open = 1.5;   // target pixels: partners this far apart or more are left alone (closure 0)
 };
 
-struct SeamWeld {
+struct CutWeld {
   Eigen::MatrixX2d positions;  // n x 2, in x's units: x with glued partners moved together
   std::vector<float> closure;  // n: 1 where a vertex's cut is glued, 0 away from cuts and where it is open
 };
 
 // A pair's closure is c = clamp((open - d) / (open - glued), 0, 1), where d is the larger of its
-// two end gaps |x_a - x_c| and |x_b - x_d|, or 1 where the solver says the pair holds (`holding`,
-// optional: InterpolationResult::activePairs of x, one flag per term of Seams::pairOfTerm; a pair
+// two end gaps |x_a - x_c| and |x_b - x_d|, or 1 where the solver says the pair holds (`heldPairs`,
+// optional: InterpolationResult::heldPairs of x, one flag per term of CutSides::pairOfTerm; a pair
 // of several keys holds if any of its terms does): a held pair is glued by definition, even where
 // it has stretched to a pixel or more just before it lets go. A vertex's closure is the largest
 // of its pairs' (so the tip of a cut, where a == c, gets its pair's), and a vertex next to a cut
@@ -72,10 +72,10 @@ struct SeamWeld {
 // mutual partners at its centroid, and a lone pair between the thresholds narrows continuously
 // to d (1 - c) / (1 + c), which still grows with d.
 // x (n x 2) is in drawing pixels, shown at `pixelsPerUnit` target pixels per drawing pixel (> 0).
-// Throws std::invalid_argument unless 0 <= glued < open and holding, if given, has one flag per
-// term (and seams are renderMeshOf's, with pairOfTerm and pairPartners).
-SeamWeld weldSeams(const Eigen::MatrixX2d& x, const Seams& seams, double pixelsPerUnit,
-                   const SeamWeldOptions& options = {}, const std::vector<char>* holding = nullptr);
+// Throws std::invalid_argument unless 0 <= glued < open and heldPairs, if given, has one flag per
+// term (and cutSides are renderMeshOf's, with pairOfTerm and pairPartners).
+CutWeld weldCuts(const Eigen::MatrixX2d& x, const CutSides& cutSides, double pixelsPerUnit,
+                   const CutWeldOptions& options = {}, const std::vector<char>* heldPairs = nullptr);
 
 // The rectangle of drawing pixels shown on the target, x0 < x1 and y0 < y1 (y down).
 struct ViewBox {
@@ -95,7 +95,7 @@ struct OnionSkin {
   Eigen::VectorXd weights;                      // its interpolation weights (m)
   std::array<float, 3> tint{1, 1, 1};          // multiplies its colours
   float opacity = 0.3f;                         // in [0, 1]
-  const std::vector<char>* holding = nullptr;   // optional: which cohesive pairs hold (weldSeams)
+  const std::vector<char>* heldPairs = nullptr;   // optional: which cohesive pairs hold (weldCuts)
 };
 
 struct Overlays {
@@ -108,7 +108,7 @@ struct Overlays {
 struct FrameDraw {
   const Eigen::MatrixX2d* positions = nullptr;  // n x 2: current positions x, drawing pixels
   Eigen::VectorXd weights;                      // m convex weights; keys with weight 0 are not drawn
-  const std::vector<char>* holding = nullptr;   // optional: which cohesive pairs hold (weldSeams)
+  const std::vector<char>* heldPairs = nullptr;   // optional: which cohesive pairs hold (weldCuts)
   ViewBox view;                                 // what part of the drawing plane the target shows
   Overlays overlays;
   std::vector<OnionSkin> onion;                 // at most kMaxOnionSkins, drawn first

@@ -54,7 +54,7 @@ MeshRenderer::MeshRenderer(const vk::VulkanContext& context, VkCommandPool pool,
       indexCount_(static_cast<uint32_t>(3 * mesh.triangles.size())),
       edges_(mesh.edges),
       cohesiveEdges_(mesh.cohesiveEdges),
-      seams_(mesh.seams),
+      cutSides_(mesh.cutSides),
       features_(mesh.features) {
   if (keyCount_ == 0 || vertexCount_ == 0 || mesh.triangles.empty()) throw std::invalid_argument("render: the mesh is empty");
   VkDevice device = context.device();
@@ -130,14 +130,14 @@ MeshRenderer::Active MeshRenderer::activeKeys(const Eigen::VectorXd& weights) co
 }
 
 void MeshRenderer::drawArtwork(VkCommandBuffer cmd, const float view[4], double pixelsPerUnit, const Eigen::MatrixX2d& x,
-                               const Eigen::VectorXd& weights, const std::vector<char>* holding, const float tint[4],
+                               const Eigen::VectorXd& weights, const std::vector<char>* heldPairs, const float tint[4],
                                int slot, VkDeviceSize& offset) {
   if (x.rows() != vertexCount_)
     throw std::invalid_argument("render: " + std::to_string(x.rows()) + " positions for " + std::to_string(vertexCount_) + " vertices");
   if (!x.allFinite()) throw std::invalid_argument("render: positions are not finite");
   const Active active = activeKeys(weights);
   if (active.count == 0) return;  // nothing has weight: nothing to draw
-  const SeamWeld weld = weldSeams(x, seams_, pixelsPerUnit, {}, holding);
+  const CutWeld weld = weldCuts(x, cutSides_, pixelsPerUnit, {}, heldPairs);
   auto* out = reinterpret_cast<float*>(static_cast<char*>(streams_[slot].mapped) + offset);
   for (int v = 0; v < vertexCount_; ++v) {
     out[kArtworkFloats * v] = static_cast<float>(weld.positions(v, 0));
@@ -219,10 +219,10 @@ void MeshRenderer::record(VkCommandBuffer cmd, int slot, VkExtent2D extent, cons
     if (!skin.positions) throw std::invalid_argument("render: an onion skin has no positions");
     const float o = std::clamp(skin.opacity, 0.0f, 1.0f);
     const float tint[4] = {skin.tint[0] * o, skin.tint[1] * o, skin.tint[2] * o, o};
-    drawArtwork(cmd, view, pixelsPerUnit, *skin.positions, skin.weights, skin.holding, tint, slot, offset);
+    drawArtwork(cmd, view, pixelsPerUnit, *skin.positions, skin.weights, skin.heldPairs, tint, slot, offset);
   }
   const float plain[4] = {1, 1, 1, 1};
-  drawArtwork(cmd, view, pixelsPerUnit, *frame.positions, frame.weights, frame.holding, plain, slot, offset);
+  drawArtwork(cmd, view, pixelsPerUnit, *frame.positions, frame.weights, frame.heldPairs, plain, slot, offset);
   offset = (1 + kMaxOnionSkins) * static_cast<VkDeviceSize>(vertexCount_) * sizeof(vk::ArtworkVertex);
   drawOverlays(cmd, view, extent, frame, slot, offset);
 }

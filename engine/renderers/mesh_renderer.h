@@ -1,7 +1,7 @@
 // Draws a RenderMesh at the current positions with every active key's artwork blended by the
 // weights (premultiplied alpha), then the overlays, into a render pass created by
 // createColorRenderPass. Heavy setup once (artwork upload, UVs, indices, pipelines); per frame only
-// positions (welded along glued cuts, with each vertex's closure: weldSeams) and overlay vertices
+// positions (welded along glued cuts, with each vertex's closure: weldCuts) and overlay vertices
 // are written, into the stream buffer of the frame's slot, so the GPU keeps drawing earlier slots
 // meanwhile (libigl's precompute-then-solve, for pixels).
 #pragma once
@@ -37,9 +37,9 @@ class MeshRenderer {
     int layers[kMaxActiveKeys] = {};
   };
   Active activeKeys(const Eigen::VectorXd& weights) const;
-  // pixelsPerUnit: target pixels per drawing pixel, for weldSeams.
+  // pixelsPerUnit: target pixels per drawing pixel, for weldCuts.
   void drawArtwork(VkCommandBuffer cmd, const float view[4], double pixelsPerUnit, const Eigen::MatrixX2d& x,
-                   const Eigen::VectorXd& weights, const std::vector<char>* holding, const float tint[4], int slot,
+                   const Eigen::VectorXd& weights, const std::vector<char>* heldPairs, const float tint[4], int slot,
                    VkDeviceSize& offset);
   void drawOverlays(VkCommandBuffer cmd, const float view[4], VkExtent2D extent, const FrameDraw& frame, int slot,
                     VkDeviceSize offset);
@@ -50,7 +50,7 @@ class MeshRenderer {
   uint32_t indexCount_ = 0;
   std::vector<Edge> edges_;                      // overlay geometry, copied from the RenderMesh
   std::vector<std::vector<Edge>> cohesiveEdges_;
-  Seams seams_;                                  // welded in every frame (weldSeams)
+  CutSides cutSides_;                                  // welded in every frame (weldCuts)
   std::vector<int> features_;
   VkDeviceSize overlayCapacity_ = 0;             // overlay vertices a stream buffer holds
   vk::RendererPipelines pipelines_;

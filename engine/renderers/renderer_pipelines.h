@@ -27,7 +27,7 @@ static_assert(sizeof(ArtworkPush) == 104, "ArtworkPush must match shaders/artwor
 
 struct ArtworkVertex {
   float position[2];  // drawing pixels
-  float seamClosure;  // 0..1, see render::weldSeams
+  float seamClosure;  // 0..1, see render::weldCuts
 };
 
 struct OverlayVertex {

@@ -112,7 +112,7 @@ AnimationFrame FrameStream::State::solveFrame(int index, double time, bool warm)
   const InterpolationResult plain = plain_.solve(frame.weights, start ? &*start : nullptr);
   frame.plain = plain.x;
   frame.x = plain.x;
-  frame.activePairs = plain.activePairs;
+  frame.heldPairs = plain.heldPairs;
   frame.iterations = plain.iterations;
   frame.converged = plain.converged;
   if (warm) {
@@ -155,7 +155,7 @@ void FrameStream::State::addDynamics(AnimationFrame& frame) {
   }
   const InterpolationResult result = dynamic_->solve(frame.weights, &springs.target, &springs);
   frame.x = result.x;
-  frame.activePairs = result.activePairs;
+  frame.heldPairs = result.heldPairs;
   frame.iterations += result.iterations;
   frame.converged = frame.converged && result.converged;
   frame.deviation = deviation(frame.x, frame.plain);

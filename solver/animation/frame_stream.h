@@ -27,7 +27,7 @@ struct AnimationFrame {
   double blend = 0;         // the controller's beta (0: plain interpolation)
   double xi = 0;            // the paper's xi (eq. 18), in normalized units
   double deviation = 0;     // mass-weighted RMS of x - plain, in shape sizes
-  std::vector<char> activePairs;  // which cohesive pairs hold at x (InterpolationResult::activePairs)
+  std::vector<char> heldPairs;  // which cohesive pairs hold at x (InterpolationResult::heldPairs)
   int iterations = 0;       // solver iterations spent on this frame (plain and dynamic solves)
   bool converged = true;    // every solve of this frame met the stopping rule
   double milliseconds = 0;  // wall time of this frame's solves

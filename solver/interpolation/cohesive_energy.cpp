@@ -25,8 +25,8 @@ double CohesiveEnergy::springConstant(int term) const {
 }
 
 double CohesiveEnergy::evaluate(const Eigen::MatrixX2d& x, const Eigen::VectorXd& w, Eigen::MatrixX2d& gradient,
-                                std::vector<char>& active) const {
-  active.assign(terms_.size(), 0);
+                                std::vector<char>& held) const {
+  held.assign(terms_.size(), 0);
   double energy = 0;
   for (size_t j = 0; j < terms_.size(); ++j) {
     const CohesiveTerm& t = terms_[j];
@@ -44,7 +44,7 @@ double CohesiveEnergy::evaluate(const Eigen::MatrixX2d& x, const Eigen::VectorXd
     const double scale = t.restLength / 3.0 * params_.lambda;
     const double q = scale * (u.dot(Pu) + u.dot(Pv) + v.dot(Pv));
     if (q < params_.tau) {
-      active[j] = 1;
+      held[j] = 1;
       energy += weight * q;
       const Eigen::Vector2d gu = weight * scale * (2.0 * Pu + Pv);
       const Eigen::Vector2d gv = weight * scale * (Pu + 2.0 * Pv);

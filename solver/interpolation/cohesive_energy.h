@@ -6,7 +6,7 @@
 // holds an isotropic spring that majorizes it). The gradient is the exact one, including the
 // dependence of xhat on x: with xhat frozen (as the paper's iteration treats it) the gradient
 // is not rotation invariant and carries a net torque, so a rotation-gauged solve could not
-// drive it to zero. A pair is *active* while l/3 d < tau; a clamped pair costs tau and exerts
+// drive it to zero. A pair is *held* while l/3 d < tau; a clamped pair costs tau and exerts
 // no force.
 #pragma once
 
@@ -34,9 +34,9 @@ class CohesiveEnergy {
   const std::vector<CohesiveTerm>& terms() const { return terms_; }
 
   // Returns sum_i w_i W_C(C_i, x), adds its gradient to gradient (n x 2) and sets
-  // active[j] for every term j (false for terms of keys with zero weight).
+  // held[j] for every term j (false for terms of keys with zero weight).
   double evaluate(const Eigen::MatrixX2d& x, const Eigen::VectorXd& w, Eigen::MatrixX2d& gradient,
-                  std::vector<char>& active) const;
+                  std::vector<char>& held) const;
 
   // Isotropic spring constant standing in for term j in a matrix shared by x and y:
   // l/3 lambda max(alpha, 1 - alpha), the largest eigenvalue of its P, so the spring majorizes it.

@@ -29,7 +29,7 @@ const Eigen::SparseMatrix<double>& GlobalMatrix::assemble(const GlobalMatrixFram
   for (size_t j = 0; j < terms.size(); ++j) {
     const CohesivePair& p = terms[j].pair;
     // k S [[2,1],[1,2]] S^T with S = [e_a - e_c, e_b - e_d]; zeros keep the pattern when clamped.
-    const bool on = j < frame.active.size() && frame.active[j];
+    const bool on = j < frame.held.size() && frame.held[j];
     const double k = on ? frame.w(terms[j].key) * cohesive.springConstant(static_cast<int>(j)) : 0.0;
     const int vert[4] = {p.a, p.c, p.b, p.d};
     const double sign[4] = {1, -1, 1, -1};
@@ -46,28 +46,28 @@ const Eigen::SparseMatrix<double>& GlobalMatrix::assemble(const GlobalMatrixFram
   return assembly_.matrix();
 }
 
-long GlobalMatrix::updateCost(const std::vector<char>& active) const {
-  if (!valid_ || active.size() != active_.size()) throw std::logic_error("global matrix: no factor to update");
+long GlobalMatrix::updateCost(const std::vector<char>& held) const {
+  if (!valid_ || held.size() != held_.size()) throw std::logic_error("global matrix: no factor to update");
   const auto& terms = sources_.cohesive->terms();
   long cost = 0;
-  for (size_t j = 0; j < active.size(); ++j)
-    if (active[j] != active_[j] && weights_(terms[j].key) != 0) {
+  for (size_t j = 0; j < held.size(); ++j)
+    if (held[j] != held_[j] && weights_(terms[j].key) != 0) {
       const CohesivePair& p = terms[j].pair;
       cost += 2 * factor_.updateCost(std::min(std::min(p.a, p.b), std::min(p.c, p.d)));
     }
   return cost;
 }
 
-bool GlobalMatrix::updateActive(const std::vector<char>& active) {
-  if (!valid_ || active.size() != active_.size()) throw std::logic_error("global matrix: no factor to update");
+bool GlobalMatrix::updateHeld(const std::vector<char>& held) {
+  if (!valid_ || held.size() != held_.size()) throw std::logic_error("global matrix: no factor to update");
   const CohesiveEnergy& cohesive = *sources_.cohesive;
   const auto& terms = cohesive.terms();
   // k S [[2,1],[1,2]] S^T = 3k/2 v1 v1^T + k/2 v2 v2^T with v1 = S (1, 1), v2 = S (1, -1). Springs
   // that engage go first, so every intermediate H is positive definite.
   for (int pass = 0; pass < 2; ++pass)
-    for (size_t j = 0; j < active.size(); ++j) {
-      const bool engages = active[j] && !active_[j];
-      if (active[j] == active_[j] || engages != (pass == 0) || weights_(terms[j].key) == 0) continue;
+    for (size_t j = 0; j < held.size(); ++j) {
+      const bool engages = held[j] && !held_[j];
+      if (held[j] == held_[j] || engages != (pass == 0) || weights_(terms[j].key) == 0) continue;
       const CohesivePair& p = terms[j].pair;
       const double k = weights_(terms[j].key) * cohesive.springConstant(static_cast<int>(j));
       const double sigma = engages ? 1.0 : -1.0;
@@ -77,11 +77,11 @@ bool GlobalMatrix::updateActive(const std::vector<char>& active) {
         factor_.rankOneUpdate({p.a, p.c, p.b, p.d}, {a2, -a2, -a2, a2}, sigma);
       } catch (const std::runtime_error&) {
         // A downdate lost definiteness to rounding; the factor is spoilt, so build it afresh.
-        factorize({weights_, springs_, active});
+        factorize({weights_, springs_, held});
         return false;
       }
     }
-  active_ = active;
+  held_ = held;
   return true;
 }
 
@@ -90,7 +90,7 @@ void GlobalMatrix::factorize(const GlobalMatrixFrame& frame) {
   factor_.factorize(assemble(frame));
   weights_ = frame.w;
   springs_ = frame.springs;
-  active_ = frame.active;
+  held_ = frame.held;
   valid_ = true;
 }
 
@@ -106,7 +106,7 @@ bool GlobalMatrix::springsMatch(const Eigen::VectorXd& springs) const {
 
 bool GlobalMatrix::models(const GlobalMatrixFrame& frame, double refactorDistance) const {
   return valid_ && (frame.w - weights_).lpNorm<1>() <= refactorDistance &&
-         (refactorDistance > 0 || frame.w == weights_) && frame.active == active_ && springsMatch(frame.springs);
+         (refactorDistance > 0 || frame.w == weights_) && frame.held == held_ && springsMatch(frame.springs);
 }
 
 }  // namespace ib

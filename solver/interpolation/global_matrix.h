@@ -1,7 +1,7 @@
 // H, the matrix of the interpolation solver's global step x <- x - H^{-1} g (n x n, shared by the
 // x and y columns, lower triangle stored):
 //   H = sum_t E^T M_t(w) E                      ARAP with rotations frozen (deformation_energy.h)
-//     + sum_j k_j S_j [[2,1],[1,2]] S_j^T        isotropic springs of the active cohesive pairs
+//     + sum_j k_j S_j [[2,1],[1,2]] S_j^T        isotropic springs of the held pairs
 //     + (mu m_v + c_v) I                         placement tie and per-vertex springs
 //     + k_O on every boundary vertex             when W_O is enforced
 // Assembled into a pattern recorded once (fixed_pattern.h) and factorized. The factor serves as
@@ -34,7 +34,7 @@ struct GlobalMatrixSources {
 struct GlobalMatrixFrame {
   const Eigen::VectorXd& w;         // m x 1 weights
   const Eigen::VectorXd& springs;   // n x 1 vertex springs c_v (empty: none)
-  const std::vector<char>& active;  // per cohesive term: not clamped
+  const std::vector<char>& held;  // per cohesive term: not clamped
 };
 
 class GlobalMatrix {
@@ -43,28 +43,28 @@ class GlobalMatrix {
   // CholeskyPreconditioner::setPreordered), one entry more than threads.
   GlobalMatrix(GlobalMatrixSources sources, int vertices, std::vector<int> partStart, int threads);
 
-  // Whether the factor still models the frame: factorized, built with the same active cohesive
+  // Whether the factor still models the frame: factorized, built with the same held cohesive
   // pairs, w within refactorDistance (L1; 0: exactly the same w) and every c_v within a fifth.
   bool models(const GlobalMatrixFrame& frame, double refactorDistance) const;
   // Assembles and factorizes H for the frame. Throws std::runtime_error if H is not positive
   // definite.
   void factorize(const GlobalMatrixFrame& frame);
-  // Brings the factor to the active cohesive pairs `active` (one entry per term) without
+  // Brings the factor to the held pairs `held` (one entry per term) without
   // refactorizing: two rank-one modifications per pair that engaged or let go, with its spring at
   // the weights H was built for, so H stays what factorize() builds for those weights and pairs.
   // Needs a factor (std::logic_error otherwise). Returns false if it had to factorize instead
   // (a downdate that lost definiteness to rounding).
-  bool updateActive(const std::vector<char>& active);
-  // Multiply-adds updateActive(active) would take, comparable with factorizationCost().
-  long updateCost(const std::vector<char>& active) const;
+  bool updateHeld(const std::vector<char>& held);
+  // Multiply-adds updateHeld(held) would take, comparable with factorizationCost().
+  long updateCost(const std::vector<char>& held) const;
   // Multiply-adds of a factorization (CholeskyPreconditioner::factorizationCost).
   long factorizationCost() const { return factor_.factorizationCost(); }
   // Forgets the factor: the next models() is false.
   void invalidate() { valid_ = false; }
 
   const CholeskyPreconditioner& factor() const { return factor_; }
-  // The active cohesive pairs the factor was built with.
-  const std::vector<char>& active() const { return active_; }
+  // The held pairs the factor was built with.
+  const std::vector<char>& held() const { return held_; }
 
  private:
   const Eigen::SparseMatrix<double>& assemble(const GlobalMatrixFrame& frame);
@@ -74,10 +74,10 @@ class GlobalMatrix {
   int vertices_ = 0;
   FixedPatternAssembly assembly_;  // H's entries, in the same order at every factorization
   CholeskyPreconditioner factor_;
-  bool valid_ = false;             // factor_ holds H for weights_, springs_ and active_
+  bool valid_ = false;             // factor_ holds H for weights_, springs_ and held_
   Eigen::VectorXd weights_;
   Eigen::VectorXd springs_;
-  std::vector<char> active_;
+  std::vector<char> held_;
 };
 
 }  // namespace ib

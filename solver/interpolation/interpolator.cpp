@@ -37,7 +37,7 @@ const SolverOptions& validOptions(const InterpolationParams& p, const SolverOpti
   require(o.andersonDepth >= 0 && o.andersonDepth <= AndersonAcceleration::kMaxDepth, "andersonDepth",
           "must be in [0, " + std::to_string(AndersonAcceleration::kMaxDepth) + "]");
   require(o.refactorDistance >= 0 && std::isfinite(o.refactorDistance), "refactorDistance", "must be >= 0");
-  require(o.staleActiveIterations >= 1, "staleActiveIterations", "must be >= 1");
+  require(o.staleHeldIterations >= 1, "staleHeldIterations", "must be >= 1");
   require(o.placementStiffness > 0 && std::isfinite(o.placementStiffness), "placementStiffness", "must be > 0");
   require(o.nonOverlapStiffness > 0 && std::isfinite(o.nonOverlapStiffness), "nonOverlapStiffness", "must be > 0");
   require(o.threads >= 0, "threads", "must be >= 0 (0 = all cores)");
@@ -111,7 +111,7 @@ struct Interpolator::Impl::State {
   Eigen::MatrixX2d x, gradient;
   double energy = 0;                          // W_I + E_P
   double placement = 0;                       // E_P alone
-  std::vector<char> active;                   // cohesive terms not clamped
+  std::vector<char> held;                   // cohesive terms not clamped
   std::vector<std::pair<int, int>> contacts;  // W_O offenders
 };
 
@@ -214,14 +214,14 @@ void Interpolator::Impl::evaluateState(const Frame& frame, State& s) const {
   s.energy = s.placement;
   if (frame.springs.size()) s.energy += springEnergyOf(frame.springs, frame.springTarget, s.x, s.gradient);
   s.energy += deformation_->evaluate(s.x, frame.keys, s.gradient, vertexSplit_, triangleSplit_);
-  s.energy += cohesive_->evaluate(s.x, frame.w, s.gradient, s.active);
+  s.energy += cohesive_->evaluate(s.x, frame.w, s.gradient, s.held);
   s.contacts.clear();
   if (params_.nonOverlap) s.energy += nonOverlap_->evaluate(s.x, frame.participants, s.gradient, s.contacts);
 }
 
 void Interpolator::Impl::evaluateLinks(const Frame& frame, State& s) const {
   Eigen::MatrixX2d scratch = Eigen::MatrixX2d::Zero(vertexCount(), 2);
-  cohesive_->evaluate(s.x, frame.w, scratch, s.active);
+  cohesive_->evaluate(s.x, frame.w, scratch, s.held);
   s.contacts.clear();
   if (params_.nonOverlap) nonOverlap_->evaluate(s.x, frame.participants, scratch, s.contacts);
 }
@@ -230,7 +230,7 @@ void Interpolator::Impl::align(const Frame& frame, const State& reference, Eigen
   std::vector<std::pair<int, int>> links = reference.contacts;
   const auto& terms = cohesive_->terms();
   for (size_t j = 0; j < terms.size(); ++j)
-    if (j < reference.active.size() && reference.active[j]) {
+    if (j < reference.held.size() && reference.held[j]) {
       links.push_back({terms[j].pair.a, terms[j].pair.c});
       links.push_back({terms[j].pair.b, terms[j].pair.d});
     }
@@ -279,9 +279,9 @@ Interpolator::Impl::Step Interpolator::Impl::step(const Frame& frame, const Stat
     candidate.x = plain;
     if (tryCandidate()) return Step::kAccepted;
   }
-  if (s.active != global_->active()) {
+  if (s.held != global_->held()) {
     // Cohesive pairs engaged or let go since H was built: H no longer models the energy.
-    refactorize(frame.w, frame.springs, s.active, result);
+    refactorize(frame.w, frame.springs, s.held, result);
     anderson_.reset();
     return Step::kRefactorized;
   }
@@ -314,7 +314,7 @@ InterpolationResult Interpolator::Impl::solve(const Eigen::VectorXd& w, const Ei
 
   InterpolationResult result;
   result.evaluations = 1;
-  ensureFactorization(frame.w, frame.springs, s.active, result);
+  ensureFactorization(frame.w, frame.springs, s.held, result);
   result.startEnergy = s.energy;
   result.energyHistory.push_back(s.energy);
   const double startNorm = gradientNorm(s.gradient);
@@ -332,7 +332,7 @@ InterpolationResult Interpolator::Impl::solve(const Eigen::VectorXd& w, const Ei
 
   State candidate;
   Eigen::MatrixX2d plain;
-  int staleIterations = 0;  // accepted iterations in a row whose active cohesive set H does not model
+  int staleIterations = 0;  // accepted iterations in a row whose set of held pairs H does not model
   while (norm > target && result.iterations < options_.maxIterations) {
     const Step outcome = step(frame, s, candidate, plain, result);
     if (outcome == Step::kRefactorized) continue;
@@ -340,13 +340,13 @@ InterpolationResult Interpolator::Impl::solve(const Eigen::VectorXd& w, const Ei
     std::swap(s, candidate);
     // A pair that let go keeps its stiff spring in a stale H, so steps along it stay tiny while
     // still lowering the energy, and nothing fails (measured: the frame where a cut lets go took
-    // 46-500 iterations). So H's factor follows the pairs at once where it can (followActive);
+    // 46-500 iterations). So H's factor follows the pairs at once where it can (followHeld);
     // where that costs more than a factorization, H is rebuilt once it has been stale for a
     // while; at once would cost a factorization per iteration while pairs let go one after another.
-    if (s.active != global_->active() && followActive(frame.w, frame.springs, s.active, result)) anderson_.reset();
-    staleIterations = s.active == global_->active() ? 0 : staleIterations + 1;
-    if (staleIterations >= options_.staleActiveIterations) {
-      refactorize(frame.w, frame.springs, s.active, result);
+    if (s.held != global_->held() && followHeld(frame.w, frame.springs, s.held, result)) anderson_.reset();
+    staleIterations = s.held == global_->held() ? 0 : staleIterations + 1;
+    if (staleIterations >= options_.staleHeldIterations) {
+      refactorize(frame.w, frame.springs, s.held, result);
       anderson_.reset();
       staleIterations = 0;
     }
@@ -361,7 +361,7 @@ InterpolationResult Interpolator::Impl::solve(const Eigen::VectorXd& w, const Ei
   result.converged = norm <= target;
   result.relativeResidual = relative(norm);
   result.energy = s.energy;
-  result.activePairs = s.active;
+  result.heldPairs = s.held;
   result.interpolationEnergy = s.energy - s.placement;
   result.x = fromLayout(s.x, originalOf_) * scale_;
   result.milliseconds =

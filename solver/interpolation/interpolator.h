@@ -8,12 +8,12 @@
 // global step is x <- x - H^{-1} g with H = sum_t E^T M_t(w) E + cohesive springs + mu M, an n x n
 // matrix shared by x and y (global_matrix.h). With H the current frame's exact quadratic this is
 // the classic global solve. H is refactorized only when w has moved by more than
-// SolverOptions::refactorDistance (L1) since the last factorization. When the set of active
+// SolverOptions::refactorDistance (L1) since the last factorization. When the set of held
 // cohesive pairs changes (at the start of a frame or after an accepted iteration), H is
 // refactorized at the frame's weights if w has moved by more than half of refactorDistance;
 // otherwise its factor is brought to the new set by rank-one updates, or, where a factorization
 // costs less than those (meshes of about a hundred vertices), H is refactorized once the set has
-// differed for SolverOptions::staleActiveIterations iterations or a step fails while it
+// differed for SolverOptions::staleHeldIterations iterations or a step fails while it
 // differs. Otherwise H serves as a fixed preconditioner:
 // the fixed point is the same stationary point (g = 0), and the anisotropic, x-dependent
 // cohesive matrix P lives in the gradient (local step), not in H. Anderson acceleration on top,
@@ -54,13 +54,13 @@ struct SolverOptions {
   // more on the scenes; 32 was no better.
   int andersonDepth = 16;
   double refactorDistance = 1.0;    // refactorize H when |w - w_H|_1 exceeds this; 0 = exact H every frame
-  // Where updating H's factor for changed active cohesive pairs would cost more than a
+  // Where updating H's factor for changed held pairs would cost more than a
   // factorization (small meshes, or many pairs changing at once): refactorize H after this many
-  // iterations in a row in which the active pairs differ from H's (a step that fails meanwhile
+  // iterations in a row in which the held pairs differ from H's (a step that fails meanwhile
   // refactorizes at once); >= 1. Default 4. With 8 and 16, two bundled scenes jumped in
   // mid-animation (another minimum of the nonconvex energy); with 1, 2 and 4 they did not.
-  int staleActiveIterations = 4;
-  // Follow changed active cohesive pairs by rank-one updates of H's factor where they cost less
+  int staleHeldIterations = 4;
+  // Follow changed held pairs by rank-one updates of H's factor where they cost less
   // than a factorization and w is near H's (see above). false: refactorize by the rules above
   // only (for comparison, `inbetween bench cut`). Default true.
   bool updateFactor = true;
@@ -80,7 +80,7 @@ struct InterpolationResult {
   double interpolationEnergy = 0;     // W_I alone at x (eq. 9), without the placement tie
   bool converged = false;             // residual below tolerance, or |g| at rounding level; never a small step
   int factorizations = 0;             // numeric factorizations of H during this solve
-  int factorUpdates = 0;              // rank-one updates of H's factor for changed active cohesive pairs
+  int factorUpdates = 0;              // rank-one updates of H's factor for changed held pairs
   double factorMilliseconds = 0;      // wall time of both, part of milliseconds
   double milliseconds = 0;            // wall time of this solve, factorization included
   std::vector<double> energyHistory;    // energy after each iteration (start first)
@@ -88,7 +88,7 @@ struct InterpolationResult {
   // Per cohesive pair, in the multimesh's order (key 0's pairs C_0, then C_1, ...), at the last
   // iterate: 1 while the pair holds (l/3 d < tau, eq. 11), 0 once it is clamped (let go) or its
   // key has zero weight.
-  std::vector<char> activePairs;
+  std::vector<char> heldPairs;
 };
 
 // Extra per-vertex springs E_S = 1/2 sum_v c_v |x_v - y_v|^2 added to the energy of one solve:

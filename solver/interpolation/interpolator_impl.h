@@ -46,30 +46,30 @@ class Interpolator::Impl {
   double gradientNorm(const Eigen::MatrixX2d& g) const;  // |g|_inf, over the vertex split
   Frame makeFrame(const Eigen::VectorXd& w, const VertexSprings* springs) const;
   void evaluateState(const Frame& frame, State& state) const;
-  // Only what placement groups need: active cohesive pairs and non-overlap contacts.
+  // Only what placement groups need: held pairs and non-overlap contacts.
   void evaluateLinks(const Frame& frame, State& state) const;
   void align(const Frame& frame, const State& reference, Eigen::MatrixX2d& x);
   // One safeguarded iteration from s: the Anderson candidate, else the plain step, else (if the
-  // active cohesive set changed) a refactorization to retry with, else a backtracked plain
+  // set of held pairs changed) a refactorization to retry with, else a backtracked plain
   // step. On kAccepted the new iterate is in candidate; plain is scratch.
   enum class Step { kAccepted, kRefactorized, kStalled };
   Step step(const Frame& frame, const State& s, State& candidate, Eigen::MatrixX2d& plain, InterpolationResult& result);
-  // H's factor for a frame's weights w (m x 1), vertex springs (n x 1 or empty) and active
+  // H's factor for a frame's weights w (m x 1), vertex springs (n x 1 or empty) and held
   // cohesive pairs (interpolator_factor.cpp); all counted and timed in result.
   // Factorizes H, unless the factor still models the frame (ensureFactorization: only the pairs
-  // differing is followed as in followActive), or always (refactorize).
-  void ensureFactorization(const Eigen::VectorXd& w, const Eigen::VectorXd& springs, const std::vector<char>& active,
+  // differing is followed as in followHeld), or always (refactorize).
+  void ensureFactorization(const Eigen::VectorXd& w, const Eigen::VectorXd& springs, const std::vector<char>& held,
                            InterpolationResult& result);
-  void refactorize(const Eigen::VectorXd& w, const Eigen::VectorXd& springs, const std::vector<char>& active,
+  void refactorize(const Eigen::VectorXd& w, const Eigen::VectorXd& springs, const std::vector<char>& held,
                    InterpolationResult& result);
-  // Brings the factor to changed active pairs: refactorized at w when w has moved by more than
+  // Brings the factor to changed held pairs: refactorized at w when w has moved by more than
   // half of refactorDistance since H was built (a factor change due anyway catches up with the
-  // weights), else by rank-one updates (GlobalMatrix::updateActive) unless they would cost more
+  // weights), else by rank-one updates (GlobalMatrix::updateHeld) unless they would cost more
   // than a factorization. Returns whether the factor changed.
-  bool followActive(const Eigen::VectorXd& w, const Eigen::VectorXd& springs, const std::vector<char>& active,
+  bool followHeld(const Eigen::VectorXd& w, const Eigen::VectorXd& springs, const std::vector<char>& held,
                     InterpolationResult& result);
-  // The rank-one branch of followActive: false, nothing done, when too costly or turned off.
-  bool updateFactorization(const std::vector<char>& active, InterpolationResult& result);
+  // The rank-one branch of followHeld: false, nothing done, when too costly or turned off.
+  bool updateFactorization(const std::vector<char>& held, InterpolationResult& result);
 
   InterpolationParams params_;
   SolverOptions options_;

@@ -16,7 +16,7 @@
 namespace ib {
 
 // Groups of vertices that move rigidly together: connected components of the mesh edges plus
-// extra links (active cohesive pairs, non-overlap contacts). Union-find, O(n alpha(n)).
+// extra links (held pairs, non-overlap contacts). Union-find, O(n alpha(n)).
 class PlacementGroups {
  public:
   PlacementGroups(int vertexCount, const std::vector<std::pair<int, int>>& meshEdges);

@@ -10,17 +10,17 @@ using namespace ib;
 using namespace ib::render;
 using namespace ib::test;
 
-TEST_CASE("seams: gaps under `glued` target pixels are welded, gaps of `open` or more left alone") {
+TEST_CASE("cutSides: gaps under `glued` target pixels are welded, gaps of `open` or more left alone") {
   const CutSquare cut = cutSquare();
-  const Seams seams = renderMeshOf(cut.mesh, cutSquareArtwork()).seams;
-  REQUIRE(seams.pairs.size() == 8);
-  REQUIRE(seams.partners.size() == 9);
+  const CutSides cutSides = renderMeshOf(cut.mesh, cutSquareArtwork()).cutSides;
+  REQUIRE(cutSides.pairs.size() == 8);
+  REQUIRE(cutSides.partners.size() == 9);
   const Eigen::MatrixX2d glued = cut.mesh.keyPositions(0);
-  const SeamWeldOptions options;  // 0.5 and 1.5 target pixels
+  const CutWeldOptions options;  // 0.5 and 1.5 target pixels
 
   // The right half's cut 0.2 drawing pixels off, shown at 1x: welded shut at the midpoint.
   const Eigen::MatrixX2d nearly = shiftedRight(glued, cut.right, 0.2);
-  const SeamWeld weld = weldSeams(nearly, seams, 1.0, options);
+  const CutWeld weld = weldCuts(nearly, cutSides, 1.0, options);
   for (size_t j = 0; j < cut.left.size(); ++j) {
     const int l = cut.left[j], r = cut.right[j];
     CHECK((weld.positions.row(l) - weld.positions.row(r)).norm() < 1e-12);
@@ -39,14 +39,14 @@ TEST_CASE("seams: gaps under `glued` target pixels are welded, gaps of `open` or
   }
 
   // The same 0.2 pixels shown 10x larger are 2 target pixels: a gap the picture can show, kept.
-  const SeamWeld zoomed = weldSeams(nearly, seams, 10.0, options);
+  const CutWeld zoomed = weldCuts(nearly, cutSides, 10.0, options);
   CHECK(zoomed.positions == nearly);
   CHECK(*std::max_element(zoomed.closure.begin(), zoomed.closure.end()) == 0.0f);
 
   // Between the thresholds a gap narrows, continuously and keeping its order.
   double previous = 0;
   for (double gap = 0.5; gap <= 1.6; gap += 0.1) {
-    const SeamWeld w = weldSeams(shiftedRight(glued, cut.right, gap), seams, 1.0, options);
+    const CutWeld w = weldCuts(shiftedRight(glued, cut.right, gap), cutSides, 1.0, options);
     const double shown = (w.positions.row(cut.right[3]) - w.positions.row(cut.left[3])).norm();
     INFO("gap " << gap << " shown as " << shown);
     CHECK(shown >= previous);
@@ -56,21 +56,21 @@ TEST_CASE("seams: gaps under `glued` target pixels are welded, gaps of `open` or
     CHECK(w.closure[cut.left[3]] == Approx(std::clamp(1.5 - gap, 0.0, 1.0)).margin(1e-6));
     previous = shown;
   }
-  CHECK_THROWS_AS(weldSeams(glued, seams, 1.0, {1.0, 1.0}), std::invalid_argument);
-  CHECK_THROWS_AS(weldSeams(glued, seams, 0.0, options), std::invalid_argument);
+  CHECK_THROWS_AS(weldCuts(glued, cutSides, 1.0, {1.0, 1.0}), std::invalid_argument);
+  CHECK_THROWS_AS(weldCuts(glued, cutSides, 0.0, options), std::invalid_argument);
 }
 
-TEST_CASE("seams: a pair the solver says holds is welded shut at any gap; the others follow the pixel rule") {
+TEST_CASE("cutSides: a pair the solver says holds is welded shut at any gap; the others follow the pixel rule") {
   // Just before a stretched cut lets go its held pairs open by a pixel or more at the picture's
   // scale: with the solver's flags they stay shut, without them they would show as a speck.
   const CutSquare cut = cutSquare();
-  const Seams seams = renderMeshOf(cut.mesh, cutSquareArtwork()).seams;
-  REQUIRE(seams.pairOfTerm.size() == 8);
-  std::vector<char> holding(8, 0);
-  std::fill(holding.begin(), holding.begin() + 4, 1);  // pairs 0-3 hold: vertices 0-4 of each side
+  const CutSides cutSides = renderMeshOf(cut.mesh, cutSquareArtwork()).cutSides;
+  REQUIRE(cutSides.pairOfTerm.size() == 8);
+  std::vector<char> heldPairs(8, 0);
+  std::fill(heldPairs.begin(), heldPairs.begin() + 4, 1);  // pairs 0-3 hold: vertices 0-4 of each side
   const Eigen::MatrixX2d apart = shiftedRight(cut.mesh.keyPositions(0), cut.right, 2.0);
-  const SeamWeld plain = weldSeams(apart, seams, 1.0);
-  const SeamWeld held = weldSeams(apart, seams, 1.0, {}, &holding);
+  const CutWeld plain = weldCuts(apart, cutSides, 1.0);
+  const CutWeld held = weldCuts(apart, cutSides, 1.0, {}, &heldPairs);
   for (size_t j = 0; j < cut.left.size(); ++j) {
     const int l = cut.left[j], r = cut.right[j];
     INFO("vertex pair " << j);
@@ -88,17 +88,17 @@ TEST_CASE("seams: a pair the solver says holds is welded shut at any gap; the ot
     }
   }
   const std::vector<char> tooFew(7, 1);
-  CHECK_THROWS_AS(weldSeams(apart, seams, 1.0, {}, &tooFew), std::invalid_argument);
+  CHECK_THROWS_AS(weldCuts(apart, cutSides, 1.0, {}, &tooFew), std::invalid_argument);
 }
 
-TEST_CASE("seams: the tip of a cut, its own partner, takes its pair's closure") {
+TEST_CASE("cutSides: the tip of a cut, its own partner, takes its pair's closure") {
   // Edges (0, 1) and (0, 2) of a slit, glued: vertex 0 is the tip, vertex 3 lies off the cut.
   Eigen::MatrixX2d key(4, 2);
   key << 0, 0, 10, 0.1, 10, -0.1, 20, 0;
-  Seams seams;
-  seams.pairs.push_back({0, 1, 0, 2});
-  seams.partners.push_back({1, 2});
-  const SeamWeld weld = weldSeams(key, seams, 1.0);
+  CutSides cutSides;
+  cutSides.pairs.push_back({0, 1, 0, 2});
+  cutSides.partners.push_back({1, 2});
+  const CutWeld weld = weldCuts(key, cutSides, 1.0);
   CHECK(weld.closure[0] == 1.0f);
   CHECK(weld.closure[3] == 0.0f);
   CHECK(weld.positions(1, 1) == Approx(0).margin(1e-12));
