@@ -34,6 +34,8 @@ class Swapchain {
 
   VkSwapchainKHR get() const { return swapchain_.get(); }
   VkExtent2D extent() const { return extent_; }
+  // The images can be copied from (VK_IMAGE_USAGE_TRANSFER_SRC_BIT, when the surface offers it).
+  bool readable() const { return readable_; }
   std::vector<SwapchainImage>& images() { return images_; }
 
  private:
@@ -42,6 +44,7 @@ class Swapchain {
   VkColorSpaceKHR colorSpace_ = VK_COLOR_SPACE_SRGB_NONLINEAR_KHR;
   VkPresentModeKHR presentMode_ = VK_PRESENT_MODE_FIFO_KHR;
   VkExtent2D extent_{};
+  bool readable_ = false;
   SwapchainObject swapchain_;
   std::vector<SwapchainImage> images_;
 };
