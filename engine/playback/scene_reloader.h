@@ -1,0 +1,66 @@
+// The scene and its multimesh, reloaded in the background when its files change, for the player:
+// edit a drawing or the scene file in another program and the player picks the new one up.
+#pragma once
+
+#include "core/png_image.h"
+#include "pipeline/scene_multimesh.h"
+#include "scene/scene.h"
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace ib::play {
+
+struct LoadedScene {
+  Scene scene;
+  std::shared_ptr<const Multimesh> mesh;     // optimized when built (or the current cache beside the scene); never null
+  std::shared_ptr<const Multimesh> initial;  // the initial map when known (a built one, or NAME.initial.ibmesh
+                                             // beside the scene), else null
+  std::vector<RgbaImage> drawings;           // [key]
+  std::vector<int> features;                 // featureVertices(scene, *mesh)
+};
+
+// Loads a scene: loadScene, sceneMultimesh (the cache when current), the drawings and the
+// features. Throws InputError for a bad scene.
+LoadedScene loadPlayerScene(const std::string& scenePath, const PipelineProgress& progress = nullptr);
+
+class SceneReloader {
+ public:
+  // Loads the scene now on the caller's thread (InputError for a bad scene: the play command
+  // exits 2), using pipeline/scene_multimesh.h (the cache when current), and records the files' times.
+  explicit SceneReloader(const std::string& scenePath, const PipelineProgress& progress = nullptr);
+  // Joins the rebuild thread: nothing long is cancelled, so this waits for at most one rebuild in
+  // progress (a build with Comesh Optimization: seconds for the bundled scenes, up to minutes for
+  // large drawings). A restart queued behind it is dropped.
+  ~SceneReloader();
+  SceneReloader(const SceneReloader&) = delete;
+  SceneReloader& operator=(const SceneReloader&) = delete;
+
+  const LoadedScene& current() const;  // the last good scene
+  const std::string& path() const;     // the scene file current() or the rebuild under way is of
+
+  // Checks the scene file, every drawing and the stiffness image for a change (mtime or size, or
+  // appearing / disappearing) and, if one changed, starts a background rebuild (one at a time; a
+  // change during a rebuild restarts after it).
+  void poll();
+  void reloadNow();                          // the same, unconditionally (e.g. a dropped file: see open())
+  void open(const std::string& scenePath);   // a different scene, loaded in the background
+
+  // A finished rebuild becomes current() here (on the caller's thread); returns true once per swap.
+  bool takeReloaded();
+  // A failed rebuild's message, once; current() stays the last good scene. A failed open() keeps
+  // watching the old scene.
+  std::optional<std::string> takeError();
+
+  bool busy() const;          // a rebuild is running or queued
+  double progress() const;    // the running rebuild's fraction in [0, 1]; 1 when idle
+  std::string stage() const;  // the running rebuild's stage, e.g. "tracing arch"; empty when idle
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
+
+}  // namespace ib::play
