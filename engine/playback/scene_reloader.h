@@ -30,6 +30,8 @@ class SceneReloader {
  public:
   // Loads the scene now on the caller's thread (InputError for a bad scene: the play command
   // exits 2), using pipeline/scene_multimesh.h (the cache when current), and records the files' times.
+  // `progress` is called during this first load only; background rebuilds report through
+  // progress() and stage().
   explicit SceneReloader(const std::string& scenePath, const PipelineProgress& progress = nullptr);
   // Joins the rebuild thread: nothing long is cancelled, so this waits for at most one rebuild in
   // progress (a build with Comesh Optimization: seconds for the bundled scenes, up to minutes for
@@ -43,7 +45,10 @@ class SceneReloader {
 
   // Checks the scene file, every drawing and the stiffness image for a change (mtime or size, or
   // appearing / disappearing) and, if one changed, starts a background rebuild (one at a time; a
-  // change during a rebuild restarts after it).
+  // change during a rebuild restarts after it). When only fields that do not shape the multimesh
+  // changed (solver lambda, tau, alpha, non_overlap; dynamics; timeline: what saveParameters
+  // writes, kappa_scale aside) and no drawing did, the reloaded scene keeps the multimesh,
+  // drawings and features (the same objects) and is ready at once.
   void poll();
   void reloadNow();                          // the same, unconditionally (e.g. a dropped file: see open())
   void open(const std::string& scenePath);   // a different scene, loaded in the background

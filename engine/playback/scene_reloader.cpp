@@ -1,0 +1,342 @@
+#include "playback/scene_reloader.h"
+
+#include "core/error.h"
+#include "multimesh/multimesh.h"
+#include "multimesh/multimesh_io.h"
+#include "core/atomic_file.h"
+#include "pipeline/key_drawings.h"
+
+#include <filesystem>
+#include <mutex>
+#include <nlohmann/json.hpp>
+#include <thread>
+
+namespace ib::play {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// What poll() compares: a file's modification time and size, or its absence.
+struct FileStamp {
+  std::string path;
+  bool exists = false;
+  fs::file_time_type time{};
+  std::uintmax_t size = 0;
+
+  bool operator==(const FileStamp& other) const {
+    return path == other.path && exists == other.exists && time == other.time && size == other.size;
+  }
+};
+
+FileStamp stamp(const std::string& path) {
+  FileStamp s;
+  s.path = path;
+  std::error_code error;
+  s.time = fs::last_write_time(path, error);
+  if (error) return s;
+  s.size = fs::file_size(path, error);
+  s.exists = !error;
+  return s;
+}
+
+std::vector<FileStamp> stampAll(const std::vector<std::string>& paths) {
+  std::vector<FileStamp> out;
+  for (const std::string& path : paths) out.push_back(stamp(path));
+  return out;
+}
+
+// The files a scene is made from: the scene file, every drawing, the stiffness image.
+std::vector<std::string> sceneFiles(const Scene& scene) {
+  std::vector<std::string> files{scene.file};
+  for (const KeySpec& key : scene.keys) files.push_back(key.drawing);
+  if (!scene.stiffness.image.empty()) files.push_back(scene.stiffness.image);
+  return files;
+}
+
+// The files the multimesh is built from: every drawing and the stiffness image.
+std::vector<std::string> meshFiles(const Scene& scene) {
+  std::vector<std::string> files = sceneFiles(scene);
+  files.erase(files.begin());
+  return files;
+}
+
+// The scene file's fields that shape the multimesh, as canonical text: all but "timeline",
+// "dynamics" and the solver's cohesive and non-overlap fields (solver.kappa is painted into the
+// mesh). Two scenes with the same text, over unchanged drawings, have the same multimesh, so
+// saving tuned parameters reloads the scene without rebuilding it.
+std::string meshFields(const std::string& sceneText) {
+  nlohmann::json j = nlohmann::json::parse(sceneText, nullptr, false);
+  if (!j.is_object()) return sceneText;
+  j.erase("timeline");
+  j.erase("dynamics");
+  if (j.contains("solver") && j["solver"].is_object())
+    for (const char* field : {"lambda", "tau", "alpha", "non_overlap"}) j["solver"].erase(field);
+  if (j.contains("solver") && j["solver"].empty()) j.erase("solver");  // saving may add it
+  return j.dump();  // keys sorted: the order in the file does not matter
+}
+
+// NAME.initial.ibmesh beside the scene (what `inbetween mesh` writes next to the cache) when it
+// is at least as new as the scene's files and has the scene's key count; else null.
+std::shared_ptr<const Multimesh> initialBeside(const Scene& scene) {
+  const fs::path file = fs::path(cachedMeshPath(scene.file)).replace_extension(".initial.ibmesh");
+  std::error_code error;
+  const auto time = fs::last_write_time(file, error);
+  if (error) return nullptr;
+  for (const std::string& input : sceneFiles(scene)) {
+    const auto inputTime = fs::last_write_time(input, error);
+    if (error || inputTime > time) return nullptr;
+  }
+  try {
+    auto mesh = std::make_shared<const Multimesh>(loadMultimesh(file.string()));
+    if (mesh->keyCount() != static_cast<int>(scene.keys.size())) return nullptr;
+    return mesh;
+  } catch (const InputError&) {
+    return nullptr;  // optional: a display aid, not worth failing the scene for
+  }
+}
+
+LoadedScene built(Scene scene, const PipelineProgress& progress) {
+  LoadedScene out;
+  SceneMultimesh mesh = sceneMultimesh(scene, SceneMultimeshOptions{}, progress);
+  out.mesh = mesh.multimesh;
+  out.initial = mesh.initial ? mesh.initial : initialBeside(scene);
+  out.drawings = readKeyDrawings(scene);
+  out.features = featureVertices(scene, *out.mesh);
+  out.scene = std::move(scene);
+  return out;
+}
+
+// A loaded scene with what decides whether the next load may keep its multimesh.
+struct Loaded {
+  std::shared_ptr<const LoadedScene> scene;
+  std::string meshFields;              // meshFields() of its scene file
+  std::vector<FileStamp> meshStamps;   // its meshFiles() as of before the build
+};
+
+// Loads `path`, keeping `last`'s multimesh, drawings and features when only fields that do not
+// shape the mesh changed and its drawings and stiffness image did not (null `last`: none).
+Loaded load(const std::string& path, const Loaded* last, const PipelineProgress& progress) {
+  std::error_code error;
+  if (fs::is_directory(path, error)) loadScene(path);  // throws, naming the scene file inside
+  const std::string text = readFile(path);
+  Scene scene = parseScene(text, path);
+  Loaded out;
+  out.meshFields = meshFields(text);
+  out.meshStamps = stampAll(meshFiles(scene));
+  if (last && last->scene && last->meshFields == out.meshFields && last->meshStamps == out.meshStamps) {
+    LoadedScene kept = *last->scene;
+    kept.scene = std::move(scene);
+    out.scene = std::make_shared<const LoadedScene>(std::move(kept));
+  } else {
+    out.scene = std::make_shared<const LoadedScene>(built(std::move(scene), progress));
+  }
+  return out;
+}
+
+}  // namespace
+
+LoadedScene loadPlayerScene(const std::string& scenePath, const PipelineProgress& progress) {
+  return built(loadScene(scenePath), progress);
+}
+
+struct SceneReloader::State {
+  // The caller's thread only.
+  std::shared_ptr<const LoadedScene> current;
+  std::string currentPath;
+  std::thread thread;
+
+  // Shared with the rebuild thread, under `mutex`.
+  mutable std::mutex mutex;
+  std::string watchedPath;                // the scene file poll() watches (current()'s, or the last good open())
+  std::vector<std::string> watchedFiles;  // its files (sceneFiles)
+  std::vector<FileStamp> stamps;          // watchedFiles as of the last build's start
+  Loaded lastGood;                        // the last good load (taken or not)
+  std::string buildingPath;               // the running build's scene file
+  bool running = false;
+  bool queued = false;                    // another build after the running one
+  std::string queuedPath;
+  bool stopping = false;                  // the destructor waits: no queued build starts
+  std::shared_ptr<const LoadedScene> finished;  // a good build not yet taken
+  std::string finishedPath;
+  std::optional<std::string> error;       // a failed build's message not yet taken
+  double progress = 1;
+  std::string stage;
+
+  void start(const std::string& path);
+  void run(std::string path);
+  bool changed() const;
+};
+
+void SceneReloader::State::start(const std::string& path) {
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    if (running) {
+      queued = true;
+      queuedPath = path;
+      return;
+    }
+    running = true;
+    buildingPath = path;
+    progress = 0;
+    stage = "loading";
+  }
+  if (thread.joinable()) thread.join();  // finished: it cleared `running`
+  thread = std::thread([this, path] { run(path); });
+}
+
+void SceneReloader::State::run(std::string path) {
+  for (;;) {
+    std::vector<std::string> files;
+    Loaded last;
+    {
+      std::lock_guard<std::mutex> lock(mutex);
+      buildingPath = path;
+      files = path == watchedPath ? watchedFiles : std::vector<std::string>{path};
+      last = lastGood;
+    }
+    const std::vector<FileStamp> before = stampAll(files);
+    {
+      std::lock_guard<std::mutex> lock(mutex);
+      if (path == watchedPath) stamps = before;  // changes from now on start another build
+    }
+    std::optional<Loaded> result;
+    std::string message;
+    try {
+      result = load(path, &last, [this](const std::string& what, double fraction) {
+        std::lock_guard<std::mutex> lock(mutex);
+        stage = what;
+        progress = fraction;
+      });
+    } catch (const std::exception& e) {
+      message = e.what();
+    }
+    std::lock_guard<std::mutex> lock(mutex);
+    if (result) {
+      const std::vector<std::string> newFiles = sceneFiles(result->scene->scene);
+      std::vector<FileStamp> after;
+      for (const std::string& file : newFiles) {
+        FileStamp s = stamp(file);
+        for (const FileStamp& b : before)
+          if (b.path == file) s = b;  // a change during the build is seen by the next poll()
+        after.push_back(s);
+      }
+      watchedPath = path;
+      watchedFiles = newFiles;
+      stamps = std::move(after);
+      finished = result->scene;
+      finishedPath = path;
+      lastGood = std::move(*result);
+      error.reset();
+    } else {
+      error = message.empty() ? path + ": cannot be loaded" : message;
+    }
+    if (queued && !stopping) {
+      queued = false;
+      path = queuedPath;
+      progress = 0;
+      stage = "loading";
+      continue;
+    }
+    running = false;
+    progress = 1;
+    stage.clear();
+    return;
+  }
+}
+
+bool SceneReloader::State::changed() const {
+  std::vector<FileStamp> known;
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    known = stamps;
+  }
+  for (const FileStamp& s : known)
+    if (!(stamp(s.path) == s)) return true;
+  return false;
+}
+
+SceneReloader::SceneReloader(const std::string& scenePath, const PipelineProgress& progress)
+    : state_(std::make_unique<State>()) {
+  const FileStamp before = stamp(scenePath);
+  state_->lastGood = load(scenePath, nullptr, progress);
+  state_->current = state_->lastGood.scene;
+  state_->currentPath = scenePath;
+  state_->watchedPath = scenePath;
+  state_->watchedFiles = sceneFiles(state_->current->scene);
+  for (const std::string& file : state_->watchedFiles) state_->stamps.push_back(file == scenePath ? before : stamp(file));
+}
+
+SceneReloader::~SceneReloader() {
+  {
+    std::lock_guard<std::mutex> lock(state_->mutex);
+    state_->stopping = true;
+    state_->queued = false;
+  }
+  if (state_->thread.joinable()) state_->thread.join();
+}
+
+const LoadedScene& SceneReloader::current() const { return *state_->current; }
+const std::string& SceneReloader::path() const { return state_->currentPath; }
+
+void SceneReloader::poll() {
+  std::string watched;
+  bool running = false;
+  {
+    std::lock_guard<std::mutex> lock(state_->mutex);
+    if (state_->running && (state_->queued || state_->buildingPath != state_->watchedPath)) return;
+    watched = state_->watchedPath;
+    running = state_->running;
+  }
+  if (!state_->changed()) return;
+  if (running) {
+    std::lock_guard<std::mutex> lock(state_->mutex);
+    state_->queued = true;
+    state_->queuedPath = watched;
+    return;
+  }
+  state_->start(watched);
+}
+
+void SceneReloader::reloadNow() {
+  std::string watched;
+  {
+    std::lock_guard<std::mutex> lock(state_->mutex);
+    watched = state_->watchedPath;
+  }
+  state_->start(watched);
+}
+
+void SceneReloader::open(const std::string& scenePath) { state_->start(scenePath); }
+
+bool SceneReloader::takeReloaded() {
+  std::lock_guard<std::mutex> lock(state_->mutex);
+  if (!state_->finished) return false;
+  state_->current = std::move(state_->finished);
+  state_->currentPath = state_->finishedPath;
+  return true;
+}
+
+std::optional<std::string> SceneReloader::takeError() {
+  std::lock_guard<std::mutex> lock(state_->mutex);
+  std::optional<std::string> out = std::move(state_->error);
+  state_->error.reset();
+  return out;
+}
+
+bool SceneReloader::busy() const {
+  std::lock_guard<std::mutex> lock(state_->mutex);
+  return state_->running;
+}
+
+double SceneReloader::progress() const {
+  std::lock_guard<std::mutex> lock(state_->mutex);
+  return state_->progress;
+}
+
+std::string SceneReloader::stage() const {
+  std::lock_guard<std::mutex> lock(state_->mutex);
+  return state_->stage;
+}
+
+}  // namespace ib::play
