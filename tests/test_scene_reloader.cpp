@@ -1,10 +1,23 @@
 // Reloading the player's scene when its files change (engine/playback/scene_reloader.h): the
 // first load gives a mesh, a changed drawing is rebuilt in the background and swapped in on
-// takeReloaded(), and a broken edit reports an error while the last good scene stays.
-#include "playback/scene_reloader.h"
-
+// takeReloaded(), and a broken edit reports an error while the last good scene stays. The
+// playback headers come first, so the guards below tell what they pull in.
 #include "playback/live_parameters.h"
 #include "playback/scene_parameters.h"
+#include "playback/scene_reloader.h"
+#include "playback/transport.h"
+
+// The player's headers are thin, as the solver's front-end headers (test_public_headers.cpp; omp.h
+// is not checked here: this program is built with OpenMP, under which Eigen's core includes it).
+#if defined(OPENMESH_CONFIG_H) || defined(OPENMESH_TRIMESH_ARRAY_KERNEL_HH)
+#error "a playback header includes OpenMesh"
+#endif
+#if defined(EIGEN_SPARSECORE_MODULE_H) || defined(EIGEN_SPARSE_MODULE_H)
+#error "a playback header includes Eigen's sparse modules"
+#endif
+#if defined(INCLUDE_NLOHMANN_JSON_HPP_)
+#error "a playback header includes nlohmann/json"
+#endif
 
 #include "core/atomic_file.h"
 #include "core/error.h"

@@ -192,3 +192,15 @@ TEST_CASE("transport: a timeline of one frame stays on it in every mode") {
   t.step(3);
   CHECK(t.frame() == 0);
 }
+
+TEST_CASE("transport: turning ping-pong on at the out point reverses from there") {
+  Transport t(10, 1);
+  t.play();
+  CHECK(t.advance(9.5) == 9);
+  t.setPingPong(true);
+  CHECK(t.advance(0.75) == 9);
+  CHECK(t.advance(1) == 8);
+  t.setPingPong(false);  // forward again from the frame shown
+  CHECK(t.frame() == 8);
+  CHECK(t.advance(1) == 9);
+}

@@ -1,9 +1,9 @@
 #include "playback/scene_reloader.h"
 
+#include "core/atomic_file.h"
 #include "core/error.h"
 #include "multimesh/multimesh.h"
 #include "multimesh/multimesh_io.h"
-#include "core/atomic_file.h"
 #include "pipeline/key_drawings.h"
 
 #include <filesystem>
@@ -281,21 +281,13 @@ const std::string& SceneReloader::path() const { return state_->currentPath; }
 
 void SceneReloader::poll() {
   std::string watched;
-  bool running = false;
   {
     std::lock_guard<std::mutex> lock(state_->mutex);
+    // Already queued, or opening another scene: a change to this one waits for that to end.
     if (state_->running && (state_->queued || state_->buildingPath != state_->watchedPath)) return;
     watched = state_->watchedPath;
-    running = state_->running;
   }
-  if (!state_->changed()) return;
-  if (running) {
-    std::lock_guard<std::mutex> lock(state_->mutex);
-    state_->queued = true;
-    state_->queuedPath = watched;
-    return;
-  }
-  state_->start(watched);
+  if (state_->changed()) state_->start(watched);  // queued behind a running build
 }
 
 void SceneReloader::reloadNow() {

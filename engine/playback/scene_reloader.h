@@ -53,7 +53,9 @@ class SceneReloader {
   void reloadNow();                          // the same, unconditionally (e.g. a dropped file: see open())
   void open(const std::string& scenePath);   // a different scene, loaded in the background
 
-  // A finished rebuild becomes current() here (on the caller's thread); returns true once per swap.
+  // A finished rebuild becomes current() here (on the caller's thread); returns true once per
+  // swap. References from current() stay valid until then; the meshes are shared, so a renderer
+  // or solve worker may keep the old ones alive past the swap.
   bool takeReloaded();
   // A failed rebuild's message, once; current() stays the last good scene. A failed open() keeps
   // watching the old scene.

@@ -86,10 +86,12 @@ void Transport::setSpeed(double speed) {
 double Transport::speed() const { return speed_; }
 
 void Transport::enterRange() {
-  const double end = (loop_ && !pingPong_) ? out_ + 1 : out_;
-  if (position_ < in_ - kFrameSlack || position_ > end + kFrameSlack) {
+  const int shown = frame();
+  if (shown < in_ || shown > out_) {
     position_ = in_;
     forward_ = true;
+  } else if (pingPong_) {
+    position_ = std::clamp(position_, static_cast<double>(in_), static_cast<double>(out_));
   }
 }
 

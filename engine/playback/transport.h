@@ -49,7 +49,7 @@ class Transport {
   bool forward() const;  // the direction of play (false on ping-pong's way back)
 
  private:
-  void enterRange();  // a position outside [in, out] jumps to the in point
+  void enterRange();  // a frame outside [in, out] jumps to the in point; ping-pong keeps within [in, out]
 
   int frameCount_;
   double fps_;
