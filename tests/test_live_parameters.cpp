@@ -110,6 +110,19 @@ TEST_CASE("live parameters: dynamics start off for a scene without them, and off
   CHECK(p.dynamics().epsilon > 0);
 }
 
+TEST_CASE("live parameters: a slider's range widens to hold a scene value outside it") {
+  Scene scene = parsed("square-arch-notch");
+  scene.solver.tau = 5;
+  scene.dynamics.mu = 50;
+  LiveParameters p(scene);
+  CHECK(p.all()[0].max == 5);
+  CHECK(p.get("tau") == 5);
+  CHECK(p.get("mu") == 50);
+  p.set("tau", 2);
+  p.set("mu", 30);
+  CHECK_FALSE(inputError([&] { p.set("tau", 6); }).empty());
+}
+
 TEST_CASE("live parameters: set, get and reset change one value and bump the generation on every change") {
   LiveParameters p(parsed("square-arch-stretch"));
   p.set("tau", 1e-4);

@@ -189,3 +189,29 @@ TEST_CASE("scene reloader: saved parameters reload the scene keeping its multime
   CHECK(reloader.current().mesh != before);
   CHECK(reloader.current().scene.solver.kappa == 2);
 }
+
+TEST_CASE("scene reloader: open loads another scene in the background; a failed open keeps the current one") {
+  const std::string file = writtenScene("reloader-open");
+  const std::string other = writtenScene("reloader-open-other");
+  SceneReloader reloader(file);
+
+  reloader.open((fs::path(other).parent_path() / "missing.json").string());
+  REQUIRE(waitIdle(reloader, kBuildSeconds));
+  const std::optional<std::string> error = reloader.takeError();
+  REQUIRE(error);
+  CHECK_THAT(*error, Catch::Contains("missing.json"));
+  CHECK_FALSE(reloader.takeReloaded());
+  CHECK(reloader.path() == file);
+
+  reloader.open(other);
+  REQUIRE(waitIdle(reloader, kBuildSeconds));
+  CHECK_FALSE(reloader.takeError());
+  REQUIRE(reloader.takeReloaded());
+  CHECK(reloader.path() == other);
+  CHECK(reloader.current().scene.file == other);
+  later(other, 10);  // the opened scene is the one watched now
+  reloader.poll();
+  CHECK(reloader.busy());
+  REQUIRE(waitIdle(reloader, kBuildSeconds));
+  CHECK(reloader.takeReloaded());
+}
