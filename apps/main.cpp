@@ -5,6 +5,9 @@
 #ifdef INBETWEEN_WITH_ENGINE
 #include "commands/render_command.h"
 #endif
+#ifdef INBETWEEN_WITH_PLAYER
+#include "commands/play_command.h"
+#endif
 #include "core/error.h"
 
 #include <cstdio>
@@ -22,10 +25,12 @@ constexpr const char* kUsage =
     "commands:\n"
     "  mesh SCENE     build and optimize the multimesh of a scene (see `inbetween mesh --help`)\n"
     "  render SCENE   render the scene's animation to PNG frames, headless (see `inbetween render --help`)\n"
+    "  play SCENE     play the scene in a window with every parameter as a slider (see `inbetween play --help`)\n"
     "  bench interp   benchmark the interpolation solver; one JSON object per case\n"
     "  bench comesh   benchmark Comesh Optimization; one JSON object per case\n"
     "  bench anim     benchmark playing every bundled scene's timeline; one JSON object per case\n"
     "  bench render   benchmark headless rendering (frames per second); one JSON object per case\n"
+    "  bench play     benchmark the player's window (fps, frame times, parameter latency); needs a display\n"
     "  bench cut      benchmark the solver through a cut letting go; one JSON object per case\n"
     "\n"
     "options:\n"
@@ -48,6 +53,11 @@ int run(const std::vector<std::string>& args) {
   if (command == "render") return ib::runRender(rest);
 #else
   if (command == "render") throw ib::InputError("render: this inbetween was built without the engine (INBETWEEN_ENGINE=OFF)");
+#endif
+#ifdef INBETWEEN_WITH_PLAYER
+  if (command == "play") return ib::runPlay(rest);
+#else
+  if (command == "play") throw ib::InputError("play: this inbetween was built without the player (INBETWEEN_ENGINE=OFF)");
 #endif
   throw ib::InputError("unknown command '" + command + "' (see `inbetween --help`)");
 }

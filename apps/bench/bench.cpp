@@ -47,6 +47,9 @@ std::vector<Benchmark> benchmarks() {
 #ifdef INBETWEEN_WITH_ENGINE
           renderBenchmark(),
 #endif
+#ifdef INBETWEEN_WITH_PLAYER
+          playBenchmark(),
+#endif
           cutBenchmark()};
 }
 
@@ -81,8 +84,9 @@ int runBench(const std::vector<std::string>& args) {
     b.run(arguments, BenchOutput(b.name));
     return 0;
   }
-#ifndef INBETWEEN_WITH_ENGINE
-  if (args[0] == "render") throw InputError("bench render: this inbetween was built without the engine (INBETWEEN_ENGINE=OFF)");
+#ifndef INBETWEEN_WITH_PLAYER
+  if (args[0] == "render" || args[0] == "play")
+    throw InputError("bench " + args[0] + ": this inbetween was built without the engine (INBETWEEN_ENGINE=OFF)");
 #endif
   std::string names;
   for (const Benchmark& b : all) names += (names.empty() ? "" : ", ") + std::string(b.name);

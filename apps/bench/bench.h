@@ -42,6 +42,9 @@ Benchmark animBenchmark();
 #ifdef INBETWEEN_WITH_ENGINE
 Benchmark renderBenchmark();
 #endif
+#ifdef INBETWEEN_WITH_PLAYER
+Benchmark playBenchmark();
+#endif
 Benchmark cutBenchmark();
 
 // args: the words after "bench". Returns the exit code; throws InputError on bad arguments.

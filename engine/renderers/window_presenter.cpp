@@ -93,6 +93,8 @@ void WindowPresenter::submitOnce(const std::function<void(VkCommandBuffer)>& rec
   vk::submitAndWait(*context_, pool_.get(), record);
 }
 
+void WindowPresenter::waitIdle() { vk::check(vkDeviceWaitIdle(context_->device()), "waiting for the frames in flight"); }
+
 void WindowPresenter::recordBackdrop(VkCommandBuffer cmd) const {
   if (!backdrop_.checkerboard) return;  // the render pass cleared to the colour
   const VkExtent2D extent = swapchain_->extent();

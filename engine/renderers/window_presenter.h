@@ -78,6 +78,8 @@ class WindowPresenter {
   OverlayTarget overlayTarget() const;
   // Records commands with `record`, submits them and waits (uploads such as a UI's font atlas).
   void submitOnce(const std::function<void(VkCommandBuffer)>& record);
+  // Waits for every frame in flight (before the UI's objects are destroyed).
+  void waitIdle();
   bool canCapture() const { return swapchain_->readable(); }
 
   vk::GlfwWindow& window() { return *window_; }

@@ -1,0 +1,12 @@
+// `inbetween play SCENE [...]`: the interactive player (a window with the animation and the
+// sliders), or, with --frames and --screenshot, a scripted run that writes the window as PNG.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace ib {
+
+int runPlay(const std::vector<std::string>& args);
+
+}  // namespace ib

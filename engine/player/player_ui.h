@@ -1,0 +1,62 @@
+// What the player's panels share: the view settings, the canvas navigation, recent timings and
+// the layout, and the panels themselves (one file each), drawn with Dear ImGui once per frame.
+#pragma once
+
+#include "output/onion_window.h"
+#include "player/player_session.h"
+#include "player/view_navigation.h"
+#include "renderers/window_presenter.h"
+
+#include <deque>
+#include <string>
+
+namespace ib::play {
+
+struct ViewSettings {
+  render::Overlays overlays;
+  bool heldPairs = true;  // with the cohesive edges: the pairs that hold marked (green)
+  render::OnionStyle onion;
+  render::Backdrop backdrop{{0.80f, 0.80f, 0.81f}, false, {0.66f, 0.66f, 0.67f}, 12};
+};
+
+// Times of the last frames, for the readouts' graph.
+struct Timings {
+  static constexpr size_t kHistory = 180;
+  std::deque<float> frameMs;  // wall time between presented frames
+  std::deque<float> solveMs;  // the shown frame's solve time
+  double fps = 0;             // presented frames per second, smoothed
+  void add(double frameSeconds, double solveMilliseconds);
+};
+
+struct UiState {
+  ViewSettings view;
+  ViewNavigation navigation;
+  Timings timings;
+  PixelRect canvas;        // the part of the window the panels leave to the picture
+  int width = 0, height = 0;  // window pixels
+  bool weightsModeShown = false;  // weights mode was on last frame (its tab is brought forward once)
+  bool screenshotRequested = false;
+  std::string screenshotPath;  // where F12 writes; empty: inbetween-NNNN.png in the current folder
+  int screenshots = 0;
+};
+
+// The layout: a side panel on the right, the transport bar along the bottom.
+constexpr float kSidePanelWidth = 340;
+constexpr float kTransportHeight = 112;
+PixelRect canvasRect(int width, int height);
+
+void transportPanel(PlayerSession& session, UiState& ui);    // transport_panel.cpp: bottom bar, scrubber
+void weightsPanel(PlayerSession& session);                   // weights_panel.cpp: sliders, triangle pad
+void parametersPanel(PlayerSession& session);                // parameters_panel.cpp: a slider per parameter
+void viewPanel(PlayerSession& session, UiState& ui);         // view_panel.cpp: overlays, onion, backdrop, zoom
+void readoutsPanel(PlayerSession& session, const UiState& ui);  // readouts_panel.cpp: fps, solve, graph
+void filesPanel(PlayerSession& session, UiState& ui);        // files_panel.cpp: scene, reload, save, messages
+void helpPanel();                                            // files_panel.cpp: the shortcuts
+void messageBanner(PlayerSession& session, const UiState& ui);  // files_panel.cpp: the latest error
+// The side panel: tabs holding the weights, parameters, view, files and help panels.
+void sidePanel(PlayerSession& session, UiState& ui);         // view_panel.cpp
+// Held pairs drawn over the picture (ImGui's background list), when asked for.
+void heldPairMarks(const PlayerSession& session, const AnimationFrame& frame, const render::ViewBox& view,
+                   const UiState& ui);                       // view_panel.cpp
+
+}  // namespace ib::play

@@ -1,0 +1,199 @@
+#include "player/player_window.h"
+
+#include "core/error.h"
+#include "gpu/vulkan_check.h"
+
+#include <imgui.h>
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <deque>
+
+namespace ib::play {
+
+namespace {
+
+render::WindowOptions presenterOptions(const PlayerWindowOptions& options, const std::string& scenePath) {
+  render::WindowOptions out;
+  out.window = {options.width, options.height, "inbetween play - " + scenePath, true};
+  out.vsync = options.vsync;
+  out.samples = options.samples;
+  out.validation = options.validation;
+  out.device = options.device;
+  return out;
+}
+
+void onDrop(GLFWwindow*, int count, const char** paths) {
+  auto* window = static_cast<PlayerWindow*>(ImGui::GetIO().UserData);
+  if (window) window->dropped(std::vector<std::string>(paths, paths + count));
+}
+
+bool pressed(int key) { return ImGui::IsKeyPressed(key, true); }
+
+}  // namespace
+
+PlayerWindow::PlayerWindow(PlayerSession& session, const PlayerWindowOptions& options) : session_(session) {
+  presenter_ = std::make_unique<render::WindowPresenter>(session.renderMesh(), presenterOptions(options, session.scenePath()));
+  imgui_ = std::make_unique<ImGuiLayer>(*presenter_, this);
+  glfwSetDropCallback(presenter_->window().get(), &onDrop);
+  last_ = std::chrono::steady_clock::now();
+}
+
+PlayerWindow::~PlayerWindow() {
+  glfwSetDropCallback(presenter_->window().get(), nullptr);
+  // The UI's buffers and pipeline go before the presenter's device, once no frame uses them.
+  try {
+    presenter_->waitIdle();
+  } catch (const vk::VulkanError&) {  // a lost device runs nothing any more: destroying is safe
+  }
+  imgui_.reset();
+}
+
+void PlayerWindow::dropped(const std::vector<std::string>& paths) {
+  if (!paths.empty()) dropped_.push_back(paths.front());
+}
+
+bool PlayerWindow::shouldClose() const { return presenter_->window().shouldClose(); }
+
+void PlayerWindow::run() {
+  while (!shouldClose()) frame();
+}
+
+render::ViewBox PlayerWindow::contentBox() const {
+  double w = 1, h = 1;
+  for (const RgbaImage& d : session_.scene().drawings) {
+    w = std::max(w, double(d.width));
+    h = std::max(h, double(d.height));
+  }
+  return {0, 0, w, h};
+}
+
+void PlayerWindow::handleInput(const render::ViewBox& content) {
+  const ImGuiIO& io = ImGui::GetIO();
+  Transport& transport = session_.transport();
+  if (!io.WantTextInput) {
+    if (pressed(GLFW_KEY_SPACE)) transport.toggle();
+    if (pressed(GLFW_KEY_LEFT)) transport.step(-1);
+    if (pressed(GLFW_KEY_RIGHT)) transport.step(1);
+    if (pressed(GLFW_KEY_DOWN)) transport.step(-10);
+    if (pressed(GLFW_KEY_UP)) transport.step(10);
+    if (pressed(GLFW_KEY_HOME)) transport.toStart();
+    if (pressed(GLFW_KEY_END)) transport.toEnd();
+    if (pressed(GLFW_KEY_L)) transport.setLoop(!transport.loop());
+    if (pressed(GLFW_KEY_P)) transport.setPingPong(!transport.pingPong());
+    if (pressed(GLFW_KEY_I)) transport.setRange(transport.frame(), std::max(transport.frame(), transport.out()));
+    if (pressed(GLFW_KEY_O)) transport.setRange(std::min(transport.frame(), transport.in()), transport.frame());
+    if (pressed(GLFW_KEY_LEFT_BRACKET)) transport.setSpeed(transport.speed() / 1.25);
+    if (pressed(GLFW_KEY_RIGHT_BRACKET)) transport.setSpeed(transport.speed() * 1.25);
+    if (pressed(GLFW_KEY_W)) session_.setWeightsMode(!session_.weightsMode());
+    if (pressed(GLFW_KEY_F)) ui_.navigation.fit();
+    if (pressed(GLFW_KEY_1)) ui_.view.overlays.wireframe = !ui_.view.overlays.wireframe;
+    if (pressed(GLFW_KEY_2)) ui_.view.overlays.cohesive = !ui_.view.overlays.cohesive;
+    if (pressed(GLFW_KEY_3)) ui_.view.overlays.features = !ui_.view.overlays.features;
+    if (io.KeyCtrl && pressed(GLFW_KEY_S)) session_.saveParameters();
+    if (pressed(GLFW_KEY_F12)) ui_.screenshotRequested = true;
+    if (pressed(GLFW_KEY_ESCAPE)) glfwSetWindowShouldClose(presenter_->window().get(), GLFW_TRUE);
+  }
+  if (io.WantCaptureMouse || !ui_.canvas.contains(io.MousePos.x, io.MousePos.y)) return;
+  if (io.MouseWheel != 0)
+    ui_.navigation.zoomAt(std::pow(1.15, io.MouseWheel), io.MousePos.x, io.MousePos.y, content, ui_.canvas, ui_.width,
+                          ui_.height);
+  if (ImGui::IsMouseDragging(ImGuiMouseButton_Left, 0) || ImGui::IsMouseDragging(ImGuiMouseButton_Middle, 0))
+    ui_.navigation.drag(io.MouseDelta.x, io.MouseDelta.y, content, ui_.canvas, ui_.width, ui_.height);
+}
+
+void PlayerWindow::panels() {
+  sidePanel(session_, ui_);
+  transportPanel(session_, ui_);
+  readoutsPanel(session_, ui_);
+  messageBanner(session_, ui_);
+}
+
+bool PlayerWindow::frame(RgbaImage* capture) {
+  vk::pollWindowEvents();
+  const auto now = std::chrono::steady_clock::now();
+  const double seconds = std::chrono::duration<double>(now - last_).count();
+  last_ = now;
+  for (const std::string& path : dropped_) {
+    try {
+      session_.reloader().open(path);
+      session_.messages().push_back({"opening " + path, false});
+    } catch (const InputError& e) {
+      session_.messages().push_back({e.what(), true});
+    }
+  }
+  dropped_.clear();
+  if (session_.update(seconds)) {
+    presenter_->setMesh(session_.renderMesh());
+    presenter_->window().setTitle("inbetween play - " + session_.scenePath());
+  }
+
+  const VkExtent2D size = presenter_->window().framebufferSize();
+  ui_.width = static_cast<int>(std::max(1u, size.width));
+  ui_.height = static_cast<int>(std::max(1u, size.height));
+  ui_.canvas = canvasRect(ui_.width, ui_.height);
+  const render::ViewBox content = contentBox();
+  // ImGui sizes auto-fitted windows and tab bars from the frame before: the first frame is laid
+  // out twice without being drawn, so even a one-frame screenshot shows every panel.
+  for (int pass = laidOut_ ? 0 : 2; pass > 0; --pass) {
+    imgui_->beginFrame();
+    panels();
+    imgui_->skipFrame();
+  }
+  laidOut_ = true;
+  imgui_->beginFrame();
+  handleInput(content);
+  panels();
+
+  // What to draw: the shown frame, with its solved neighbours as onion skins on the timeline.
+  const std::shared_ptr<const AnimationFrame> shown = session_.shown();
+  const render::ViewBox view = ui_.navigation.windowView(content, ui_.canvas, ui_.width, ui_.height);
+  std::deque<AnimationFrame> window;
+  size_t at = 0;
+  render::FrameDraw draw;
+  draw.view = view;
+  draw.overlays = ui_.view.overlays;
+  if (shown && shown->x.rows() == session_.renderMesh().vertexCount) {
+    const int n = session_.weightsMode() ? 0 : ui_.view.onion.neighbours;
+    for (int d = n; d >= 1; --d)
+      if (auto f = session_.cachedFrame(shown->index - d)) window.push_back(*f);
+    at = window.size();
+    window.push_back(*shown);
+    for (int d = 1; d <= n; ++d)
+      if (auto f = session_.cachedFrame(shown->index + d)) window.push_back(*f);
+    render::OnionStyle style = ui_.view.onion;
+    style.neighbours = n;
+    draw = render::frameWithOnionSkins(window, at, style, view, ui_.view.overlays);
+    heldPairMarks(session_, window[at], view, ui_);
+  }
+  presenter_->setBackdrop(ui_.view.backdrop);
+  const render::Overlay overlay = imgui_->endFrame();
+  RgbaImage shot;
+  const bool wantShot = ui_.screenshotRequested && presenter_->canCapture();
+  const bool presented = presenter_->present(draw, overlay, capture ? capture : wantShot ? &shot : nullptr);
+  if (presented && wantShot) {
+    ui_.screenshotRequested = false;
+    writeScreenshot(capture ? *capture : shot);
+  }
+  if (laidOutFrames_++ > 0) ui_.timings.add(seconds, shown ? shown->milliseconds : 0);  // the first follows the load
+  return presented;
+}
+
+void PlayerWindow::writeScreenshot(const RgbaImage& image) {
+  std::string path = ui_.screenshotPath;
+  if (path.empty()) {
+    char name[48];
+    std::snprintf(name, sizeof name, "inbetween-%04d.png", ++ui_.screenshots);
+    path = name;
+  }
+  try {
+    writePng(path, image);
+    session_.messages().push_back({"wrote " + path, false});
+  } catch (const InputError& e) {
+    session_.messages().push_back({e.what(), true});
+  }
+}
+
+}  // namespace ib::play

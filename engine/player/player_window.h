@@ -1,0 +1,63 @@
+// The player's window: the presenter (GLFW + Vulkan), the Dear ImGui layer and the input, over a
+// PlayerSession. Each frame() polls events, updates the session (never waiting for a solve),
+// draws the shown frame with the panels over it and presents; frame(capture) also reads the
+// window back, UI included.
+#pragma once
+
+#include "player/imgui_layer.h"
+#include "player/player_session.h"
+#include "player/player_ui.h"
+#include "renderers/window_presenter.h"
+
+#include <chrono>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace ib::play {
+
+struct PlayerWindowOptions {
+  int width = 1280, height = 720;  // window pixels
+  bool vsync = true;
+  int samples = 4;                 // MSAA, lowered to what the device offers
+  bool validation = false;         // Khronos validation layer; messages via context()
+  vk::DevicePreference device = vk::DevicePreference::kAny;
+};
+
+class PlayerWindow {
+ public:
+  // Opens the window on the session's scene. Throws vk::WindowError (no display) or
+  // vk::VulkanError (no device that presents to it). The session must outlive the window.
+  PlayerWindow(PlayerSession& session, const PlayerWindowOptions& options);
+  ~PlayerWindow();
+  PlayerWindow(const PlayerWindow&) = delete;
+  PlayerWindow& operator=(const PlayerWindow&) = delete;
+
+  // One frame. With `capture`, the presented window is copied into it. Returns false when the
+  // frame was skipped (minimized, or the swapchain was rebuilt).
+  bool frame(RgbaImage* capture = nullptr);
+  bool shouldClose() const;
+  void run();  // frames until the window is closed (Esc or the window's close button)
+
+  UiState& ui() { return ui_; }
+  const vk::VulkanContext& context() const { return presenter_->context(); }
+  // Called by GLFW's drop callback: the first dropped file opens (in the next frame).
+  void dropped(const std::vector<std::string>& paths);
+
+ private:
+  void handleInput(const render::ViewBox& content);
+  void panels();  // every panel, once per UI frame
+  render::ViewBox contentBox() const;  // the drawings' canvas, drawing pixels
+  void writeScreenshot(const RgbaImage& image);
+
+  PlayerSession& session_;
+  std::unique_ptr<render::WindowPresenter> presenter_;
+  std::unique_ptr<ImGuiLayer> imgui_;
+  UiState ui_;
+  std::chrono::steady_clock::time_point last_;
+  std::vector<std::string> dropped_;
+  bool laidOut_ = false;  // the first frame's layout passes are done
+  int laidOutFrames_ = 0;  // frames presented or skipped so far
+};
+
+}  // namespace ib::play

@@ -1,0 +1,134 @@
+// The transport bar along the bottom of the window: buttons, loop and ping-pong, speed, the frame
+// and time readout, the in / out range, and the scrubber with the timeline's marks at their times.
+#include "player/player_ui.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace ib::play {
+
+namespace {
+
+constexpr ImU32 kTrack = IM_COL32(38, 40, 46, 255);
+constexpr ImU32 kRange = IM_COL32(70, 74, 84, 255);
+constexpr ImU32 kCached = IM_COL32(90, 150, 110, 255);
+constexpr ImU32 kKeyMark = IM_COL32(235, 200, 70, 255);
+constexpr ImU32 kBreakdown = IM_COL32(120, 180, 235, 255);
+constexpr ImU32 kPlayhead = IM_COL32(245, 140, 46, 255);
+constexpr ImU32 kTicks = IM_COL32(110, 114, 124, 255);
+
+// The scrubber: the whole timeline as a track, the loop range lighter, solved frames as a thin
+// green line, a tick every frame (or every 5th / 10th when crowded), the marks as diamonds
+// (keys yellow with their names, breakdowns blue) and the playhead. Click or drag to scrub.
+void scrubber(PlayerSession& session) {
+  Transport& transport = session.transport();
+  const Timeline& timeline = session.scene().scene.timeline;
+  const int frames = transport.frameCount();
+  const ImVec2 origin = ImGui::GetCursorScreenPos();
+  const float width = ImGui::GetContentRegionAvail().x, height = 42;
+  ImGui::InvisibleButton("scrubber", ImVec2(width, height));
+  const bool weights = session.weightsMode();
+  if (ImGui::IsItemActive() && !weights) {
+    const float u = std::clamp((ImGui::GetIO().MousePos.x - origin.x) / width, 0.0f, 1.0f);
+    transport.pause();
+    transport.goTo(static_cast<int>(std::lround(u * (frames - 1))));
+  }
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  const float top = origin.y + 14, bottom = origin.y + height - 4;
+  auto xOf = [&](double frame) { return origin.x + 6 + static_cast<float>(frame / std::max(1, frames - 1)) * (width - 12); };
+  draw->AddRectFilled(ImVec2(origin.x, top), ImVec2(origin.x + width, bottom), kTrack, 3);
+  draw->AddRectFilled(ImVec2(xOf(transport.in()) - 2, top), ImVec2(xOf(transport.out()) + 2, bottom), kRange, 3);
+  for (int f = 0; f < frames; ++f)
+    if (session.cachedFrame(f)) draw->AddLine(ImVec2(xOf(f) - 1, bottom - 2), ImVec2(xOf(f) + 2, bottom - 2), kCached, 3);
+  const float spacing = (width - 12) / std::max(1, frames - 1);
+  const int every = spacing >= 6 ? 1 : spacing >= 1.5f ? 5 : 10;
+  for (int f = 0; f < frames; f += every)
+    draw->AddLine(ImVec2(xOf(f), bottom - (f % (every * 5) == 0 ? 10 : 5)), ImVec2(xOf(f), bottom), kTicks);
+  for (const TimelineMark& mark : timeline.marks()) {
+    const double frame = (mark.time - timeline.start()) * timeline.fps();
+    if (frame > frames - 1 + 1e-9) continue;  // a looping timeline's end repeats its start
+    const float x = xOf(frame), y = top + 9;
+    const bool key = mark.label != "breakdown";
+    const float r = key ? 6.0f : 4.5f;
+    draw->AddQuadFilled(ImVec2(x, y - r), ImVec2(x + r, y), ImVec2(x, y + r), ImVec2(x - r, y), key ? kKeyMark : kBreakdown);
+    draw->AddText(ImVec2(x + r + 2, origin.y), key ? kKeyMark : kBreakdown, mark.label.c_str());
+  }
+  if (!weights) {
+    const float x = xOf(transport.frame());
+    draw->AddLine(ImVec2(x, origin.y + 8), ImVec2(x, bottom + 2), kPlayhead, 2);
+    draw->AddTriangleFilled(ImVec2(x - 5, origin.y + 6), ImVec2(x + 5, origin.y + 6), ImVec2(x, origin.y + 13), kPlayhead);
+  }
+}
+
+}  // namespace
+
+void transportPanel(PlayerSession& session, UiState& ui) {
+  Transport& transport = session.transport();
+  ImGui::SetNextWindowPos(ImVec2(0, static_cast<float>(ui.height) - kTransportHeight));
+  ImGui::SetNextWindowSize(ImVec2(static_cast<float>(ui.width) - kSidePanelWidth, kTransportHeight));
+  ImGui::Begin("Transport", nullptr,
+               ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove |
+                   ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoBringToFrontOnFocus);
+  const bool weights = session.weightsMode();
+  if (weights) ImGui::BeginDisabled();
+  if (ImGui::Button("|<")) transport.toStart();
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("To the in point (Home)");
+  ImGui::SameLine();
+  if (ImGui::Button("<<")) transport.step(-10);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Back ten frames (Down)");
+  ImGui::SameLine();
+  if (ImGui::Button(" < ")) transport.step(-1);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Back one frame (Left)");
+  ImGui::SameLine();
+  ImGui::PushStyleColor(ImGuiCol_Button, ImVec4(0.55f, 0.34f, 0.14f, 1));
+  if (ImGui::Button(transport.playing() ? " Pause " : "  Play  ")) transport.toggle();
+  ImGui::PopStyleColor();
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Play / pause (Space)");
+  ImGui::SameLine();
+  if (ImGui::Button(" > ")) transport.step(1);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Forward one frame (Right)");
+  ImGui::SameLine();
+  if (ImGui::Button(">>")) transport.step(10);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Forward ten frames (Up)");
+  ImGui::SameLine();
+  if (ImGui::Button(">|")) transport.toEnd();
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("To the out point (End)");
+  ImGui::SameLine(0, 18);
+  bool loop = transport.loop(), pingPong = transport.pingPong();
+  if (ImGui::Checkbox("Loop", &loop)) transport.setLoop(loop);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Loop the in..out range (L)");
+  ImGui::SameLine();
+  if (ImGui::Checkbox("Ping-pong", &pingPong)) transport.setPingPong(pingPong);
+  ImGui::SameLine(0, 18);
+  ImGui::SetNextItemWidth(120);
+  float speed = static_cast<float>(transport.speed());
+  if (ImGui::SliderFloat("##speed", &speed, 0.1f, 4.0f, "speed %.2fx", ImGuiSliderFlags_Logarithmic)) transport.setSpeed(speed);
+  if (ImGui::IsItemClicked(ImGuiMouseButton_Right)) transport.setSpeed(1);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Playback speed, 0.1x to 4x (right-click: 1x)");
+  scrubber(session);
+  ImGui::SetNextItemWidth(70);
+  int in = transport.in(), out = transport.out();
+  if (ImGui::DragInt("##in", &in, 0.2f, 0, transport.frameCount() - 1, "in %d")) transport.setRange(in, out);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("In point (I: set to the current frame)");
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(70);
+  if (ImGui::DragInt("##out", &out, 0.2f, 0, transport.frameCount() - 1, "out %d")) transport.setRange(in, out);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Out point (O: set to the current frame)");
+  ImGui::SameLine();
+  if (ImGui::SmallButton("all")) transport.setRange(0, transport.frameCount() - 1);
+  if (weights) ImGui::EndDisabled();
+  ImGui::SameLine(0, 18);
+  ImGui::TextDisabled("%d frames, %g fps", transport.frameCount(), transport.fps());
+  char readout[64];
+  if (weights) std::snprintf(readout, sizeof readout, "weights mode");
+  else std::snprintf(readout, sizeof readout, "frame %d / %d   %.3f s", transport.frame(), transport.frameCount() - 1, transport.time());
+  const float afterLast = ImGui::GetItemRectMax().x - ImGui::GetWindowPos().x + 18;
+  ImGui::SameLine(std::max(afterLast, ImGui::GetWindowContentRegionMax().x - ImGui::CalcTextSize(readout).x));
+  ImGui::TextUnformatted(readout);
+  ImGui::End();
+}
+
+}  // namespace ib::play

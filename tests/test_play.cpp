@@ -1,0 +1,168 @@
+// `inbetween play` scripted under Xvfb (ctest runs this program through xvfb-run), on lavapipe
+// with the validation layer: the command fails (exit 1) on any validation message, so every run
+// here that exits 0 was silent. Screenshots are read back and checked pixel by pixel against the
+// drawings, mapped through the player's own layout (canvasRect, ViewNavigation).
+#include "core/png_image.h"
+#include "player/player_ui.h"
+
+#include <catch2/catch.hpp>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+using namespace ib;
+
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr int kWidth = 960, kHeight = 600;
+const std::string kScene = std::string(INBETWEEN_ASSETS) + "/square-arch-notch/scene.json";
+
+struct Run {
+  int code = -1;
+  std::string output;  // stdout and stderr
+};
+
+// Runs `inbetween ARGS` (prefix: words before the command, e.g. env -u DISPLAY).
+Run inbetween(const std::string& args, const std::string& prefix = "") {
+  const std::string command = prefix + " " + INBETWEEN_CLI + " " + args + " 2>&1";
+  Run run;
+  FILE* pipe = popen(command.c_str(), "r");
+  REQUIRE(pipe);
+  char buffer[512];
+  while (fgets(buffer, sizeof buffer, pipe)) run.output += buffer;
+  const int status = pclose(pipe);
+  run.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return run;
+}
+
+// A scripted run of `frames` frames of the square-arch-notch scene; returns its screenshot.
+RgbaImage screenshot(const std::string& name, const std::string& options, int frames = 1) {
+  const std::string path = (fs::temp_directory_path() / ("inbetween-play-test-" + name + ".png")).string();
+  fs::remove(path);
+  const Run run = inbetween("play " + kScene + " --frames " + std::to_string(frames) + " --screenshot " + path + " --size " +
+                            std::to_string(kWidth) + "x" + std::to_string(kHeight) + " --device cpu --validation " + options);
+  INFO(run.output);
+  REQUIRE(run.code == 0);
+  const RgbaImage image = readPng(path);
+  REQUIRE(image.width == kWidth);
+  REQUIRE(image.height == kHeight);
+  return image;
+}
+
+RgbaImage drawing(const std::string& name) { return readPng(std::string(INBETWEEN_ASSETS) + "/square-arch-notch/" + name); }
+
+// Where the readouts panel sits over the picture (play::readoutsPanel): its samples are skipped.
+bool underReadouts(double x, double y) { return x < 330 && y < 230; }
+
+// Compares the screenshot with `art` (a key's drawing, 128 x 128 like the scene's canvas) at every
+// drawing pixel whose 7 x 7 neighbourhood is one colour (shape interiors and the paper away from
+// outlines, which move by a fraction of a pixel between a key and the solve at its weights).
+// Returns how many of those samples are off by more than `tolerance` /255 in a channel; opaque
+// texels are compared to their colour, transparent ones to the backdrop's grey.
+int mismatches(const RgbaImage& shot, const RgbaImage& art, int tolerance, int* compared) {
+  const play::PixelRect canvas = play::canvasRect(kWidth, kHeight);
+  const render::ViewBox view = play::ViewNavigation().windowView({0, 0, double(art.width), double(art.height)}, canvas, kWidth, kHeight);
+  const uint8_t backdrop = static_cast<uint8_t>(play::ViewSettings().backdrop.colour[0] * 255 + 0.5);
+  int bad = 0;
+  *compared = 0;
+  for (int y = 3; y < art.height - 3; ++y)
+    for (int x = 3; x < art.width - 3; ++x) {
+      bool uniform = true;
+      for (int dy = -3; dy <= 3 && uniform; ++dy)
+        for (int dx = -3; dx <= 3 && uniform; ++dx)
+          for (int c = 0; c < 4; ++c) uniform = uniform && art.at(x + dx, y + dy)[c] == art.at(x, y)[c];
+      if (!uniform || (art.at(x, y)[3] != 0 && art.at(x, y)[3] != 255)) continue;
+      const Eigen::Vector2d p = play::toWindow(view, kWidth, kHeight, {x + 0.5, y + 0.5});
+      if (underReadouts(p.x(), p.y())) continue;
+      const uint8_t* got = shot.at(static_cast<int>(p.x()), static_cast<int>(p.y()));
+      ++*compared;
+      for (int c = 0; c < 3; ++c) {
+        const int want = art.at(x, y)[3] == 255 ? art.at(x, y)[c] : backdrop;
+        if (std::abs(int(got[c]) - want) > tolerance) {
+          ++bad;
+          break;
+        }
+      }
+    }
+  return bad;
+}
+
+// Pixels of the picture (the canvas outside the readouts) that differ by more than 32/255.
+int pictureDifference(const RgbaImage& a, const RgbaImage& b) {
+  const play::PixelRect canvas = play::canvasRect(kWidth, kHeight);
+  int differ = 0;
+  for (int y = 0; y < static_cast<int>(canvas.y1); ++y)
+    for (int x = 0; x < static_cast<int>(canvas.x1); ++x) {
+      if (underReadouts(x, y)) continue;
+      for (int c = 0; c < 3; ++c)
+        if (std::abs(int(a.at(x, y)[c]) - int(b.at(x, y)[c])) > 32) {
+          ++differ;
+          break;
+        }
+    }
+  return differ;
+}
+
+}  // namespace
+
+TEST_CASE("play: the scripted screenshot shows the first key's artwork in the fitted drawing area and the UI's panels",
+          "[.window]") {
+  const RgbaImage shot = screenshot("frame0", "", 3);  // frames 0, 1, 2: the last is frame 2, still near the square
+  int compared = 0;
+  const RgbaImage first = screenshot("frame0-only", "");
+  CHECK(mismatches(first, drawing("square.png"), 3, &compared) == 0);
+  CHECK(compared > 4000);
+  // The side panel (play::sidePanel) in the theme's window colour (player/imgui_layer.cpp), and
+  // the transport bar's scrubber track, where nothing else is drawn.
+  const uint8_t* panel = shot.at(kWidth - 60, kHeight - 20);
+  CHECK(std::abs(int(panel[0]) - 33) <= 3);
+  CHECK(std::abs(int(panel[1]) - 36) <= 3);
+  CHECK(std::abs(int(panel[2]) - 41) <= 3);
+  CHECK(pictureDifference(shot, first) > 0);  // frame 2 has begun to move
+}
+
+TEST_CASE("play: --weights at e_i shows key i's drawing, and a blend shows neither", "[.window]") {
+  int compared = 0;
+  const RgbaImage square = screenshot("e0", "--weights square=1");
+  CHECK(mismatches(square, drawing("square.png"), 3, &compared) == 0);
+  CHECK(compared > 4000);
+  const RgbaImage arch = screenshot("e1", "--weights 1=1");  // by index
+  CHECK(mismatches(arch, drawing("arch.png"), 3, &compared) == 0);
+  CHECK(compared > 4000);
+  const RgbaImage blend = screenshot("blend", "--weights square=0.5,arch=0.5");
+  CHECK(pictureDifference(blend, square) > 500);
+  CHECK(pictureDifference(blend, arch) > 500);
+}
+
+TEST_CASE("play: --set tau changes the picture where a cut lets go", "[.window]") {
+  // Frame 18 of the timeline: the notch has opened with the scene's tau; a large tau keeps it shut.
+  const RgbaImage plain = screenshot("tau-default", "", 19);
+  const RgbaImage held = screenshot("tau-large", "--set tau=0.05", 19);
+  CHECK(pictureDifference(plain, held) > 200);
+}
+
+TEST_CASE("play: a scene that fails to load exits 2 with its message", "[.window]") {
+  const Run run = inbetween("play " + std::string(INBETWEEN_ASSETS) + "/no-such-scene/scene.json --frames 1 --device cpu");
+  INFO(run.output);
+  CHECK(run.code == 2);
+  CHECK_THAT(run.output, Catch::Contains("inbetween: ") && Catch::Contains("no-such-scene/scene.json"));
+}
+
+TEST_CASE("play: a bad option value exits 2 naming the option", "[.window]") {
+  Run run = inbetween("play " + kScene + " --frames 1 --weights circle=1");
+  CHECK(run.code == 2);
+  CHECK_THAT(run.output, Catch::Contains("--weights: 'circle' is not a key"));
+  run = inbetween("play " + kScene + " --frames 1 --set tau=-4");
+  CHECK(run.code == 2);
+  CHECK_THAT(run.output, Catch::Contains("tau"));
+}
+
+TEST_CASE("play: without a display exits 2 and says so", "[.window]") {
+  const Run run = inbetween("play " + kScene + " --frames 1", "env -u DISPLAY -u WAYLAND_DISPLAY");
+  INFO(run.output);
+  CHECK(run.code == 2);
+  CHECK_THAT(run.output, Catch::Contains("inbetween: play: cannot open a window: no display"));
+}
