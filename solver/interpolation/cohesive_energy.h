@@ -32,6 +32,8 @@ class CohesiveEnergy {
   CohesiveEnergy(const Multimesh& mesh, const std::vector<Eigen::MatrixX2d>& keys, const CohesiveParams& params);
 
   const std::vector<CohesiveTerm>& terms() const { return terms_; }
+  // lambda, tau and alpha for the next evaluations (the terms stay).
+  void setParams(const CohesiveParams& params) { params_ = params; }
 
   // Returns sum_i w_i W_C(C_i, x), adds its gradient to gradient (n x 2) and sets
   // held[j] for every term j (false for terms of keys with zero weight).

@@ -49,8 +49,18 @@ DeformationEnergy::DeformationEnergy(const std::vector<Triangle>& triangles, con
       r[t + k] = B(1, 0);
       r[2 * t + k] = B(0, 1);
       r[3 * t + k] = B(1, 1);
-      r[4 * t + k] = kappa(k) * area;
     }
+  }
+  setStiffness(keys, kappa);
+}
+
+void DeformationEnergy::setStiffness(const std::vector<Eigen::MatrixX2d>& keys, const Eigen::VectorXd& kappa) {
+  const int t = triangleCount();
+  if (static_cast<int>(keys.size()) != keyCount_ || kappa.size() != t)
+    throw std::invalid_argument("deformation energy: stiffness for the wrong number of keys or triangles");
+  for (int i = 0; i < keyCount_; ++i) {
+    double* c = rest_.data() + (static_cast<size_t>(i) * 5 + 4) * t;  // the layout restOf() reads
+    for (int k = 0; k < t; ++k) c[k] = kappa(k) * (0.5 * edgeMatrix(keys[i], triangles_[k]).determinant());
   }
 }
 

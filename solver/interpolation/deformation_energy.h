@@ -27,6 +27,10 @@ class DeformationEnergy {
   DeformationEnergy(const std::vector<Triangle>& triangles, const std::vector<Eigen::MatrixX2d>& keys,
                     const Eigen::VectorXd& kappa);
 
+  // New stiffness kappa (t x 1) with the same keys X_i as the constructor's: c_ti = kappa_t
+  // a_t(X_i), exactly as the constructor computes them.
+  void setStiffness(const std::vector<Eigen::MatrixX2d>& keys, const Eigen::VectorXd& kappa);
+
   int triangleCount() const { return static_cast<int>(triangles_.size()); }
   const std::vector<Triangle>& triangles() const { return triangles_; }
 

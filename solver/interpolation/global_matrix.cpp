@@ -41,8 +41,10 @@ const Eigen::SparseMatrix<double>& GlobalMatrix::assemble(const GlobalMatrixFram
   }
   for (int v = 0; v < vertices_; ++v)
     assembly_.add(v, v, sources_.tie + (frame.springs.size() ? frame.springs(v) : 0.0));
-  if (sources_.nonOverlap)
-    for (int v : sources_.nonOverlap->allBoundaryVertices()) assembly_.add(v, v, sources_.nonOverlap->stiffness());
+  if (sources_.nonOverlap) {
+    const double k = sources_.enforceNonOverlap ? sources_.nonOverlap->stiffness() : 0.0;
+    for (int v : sources_.nonOverlap->allBoundaryVertices()) assembly_.add(v, v, k);
+  }
   return assembly_.matrix();
 }
 
@@ -83,6 +85,14 @@ bool GlobalMatrix::updateHeld(const std::vector<char>& held) {
     }
   held_ = held;
   return true;
+}
+
+void GlobalMatrix::setSources(const GlobalMatrixSources& sources) {
+  if (sources.deformation != sources_.deformation || sources.cohesive != sources_.cohesive ||
+      sources.nonOverlap != sources_.nonOverlap)
+    throw std::logic_error("global matrix: new sources must keep the energies (and so H's pattern)");
+  sources_ = sources;
+  valid_ = false;
 }
 
 void GlobalMatrix::factorize(const GlobalMatrixFrame& frame) {

@@ -3,7 +3,7 @@
 //   H = sum_t E^T M_t(w) E                      ARAP with rotations frozen (deformation_energy.h)
 //     + sum_j k_j S_j [[2,1],[1,2]] S_j^T        isotropic springs of the held pairs
 //     + (mu m_v + c_v) I                         placement tie and per-vertex springs
-//     + k_O on every boundary vertex             when W_O is enforced
+//     + k_O on every boundary vertex             when W_O is enforced (else 0 there, same pattern)
 // Assembled into a pattern recorded once (fixed_pattern.h) and factorized. The factor serves as
 // a fixed preconditioner while the frame stays close to the one it was built for (models()), so
 // a frame usually costs no factorization at all.
@@ -28,6 +28,9 @@ struct GlobalMatrixSources {
   const NonOverlap* nonOverlap = nullptr;  // null: W_O not enforced, no boundary springs
   double tie = 0;                          // mu m_v, the placement tie on every vertex's diagonal
   double stiffnessScale = 1;               // one vertex's stiffness; c_v off H's by under 2% of it still match
+  // With nonOverlap given: whether W_O is enforced. false keeps the boundary entries in H's
+  // pattern with value 0, so W_O can be switched on and off without a new pattern.
+  bool enforceNonOverlap = true;
 };
 
 // The frame H is wanted for.
@@ -61,6 +64,10 @@ class GlobalMatrix {
   long factorizationCost() const { return factor_.factorizationCost(); }
   // Forgets the factor: the next models() is false.
   void invalidate() { valid_ = false; }
+  // New values for what H is built from (the parameters, stiffness and whether W_O is enforced)
+  // with the same energies, so H keeps its pattern; forgets the factor. std::logic_error if an
+  // energy differs from the constructor's.
+  void setSources(const GlobalMatrixSources& sources);
 
   const CholeskyPreconditioner& factor() const { return factor_; }
   // The held pairs the factor was built with.

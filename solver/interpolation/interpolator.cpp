@@ -28,10 +28,7 @@ void require(bool ok, const std::string& field, const std::string& rule) {
 }
 
 const SolverOptions& validOptions(const InterpolationParams& p, const SolverOptions& o) {
-  const CohesiveParams& c = p.cohesive;
-  require(std::isfinite(c.lambda) && c.lambda >= 0, "lambda", "must be a finite number >= 0");
-  require(c.tau > 0 && !std::isnan(c.tau), "tau", "must be > 0 (infinity: pairs never separate)");
-  require(c.alpha >= 0 && c.alpha <= 1, "alpha", "must be in [0, 1]");
+  validateInterpolationParams(p);
   require(o.relativeTolerance > 0 && o.relativeTolerance < 1, "relativeTolerance", "must be in (0, 1)");
   require(o.maxIterations >= 1, "maxIterations", "must be >= 1");
   require(o.andersonDepth >= 0 && o.andersonDepth <= AndersonAcceleration::kMaxDepth, "andersonDepth",
@@ -123,6 +120,7 @@ Interpolator::Impl::Impl(ThreadLayout layout, const InterpolationParams& params,
     : params_(params),
       options_(options),
       originalOf_(std::move(layout.originalOf)),
+      triangleOriginalOf_(std::move(layout.triangleOriginalOf)),
       vertexSplit_(std::move(layout.vertices)),
       triangleSplit_(std::move(layout.triangleSplit)),
       groups_(layout.mesh.vertexCount(), meshEdges(layout.mesh)),
@@ -145,7 +143,13 @@ Interpolator::Impl::Impl(ThreadLayout layout, const InterpolationParams& params,
   // with zero weight.
   vertexWeight_ = 1.0 / mesh.vertexCount();
   cohesive_ = std::make_unique<CohesiveEnergy>(mesh, keys_, params.cohesive);
+  nonOverlap_ = std::make_unique<NonOverlap>(mesh, 0.0);  // its penalty follows the stiffness scale
+  updateStiffnessScale();
+  global_ = std::make_unique<GlobalMatrix>(matrixSources(), mesh.vertexCount(), std::move(layout.partStart),
+                                           vertexSplit_.threads());
+}
 
+void Interpolator::Impl::updateStiffnessScale() {
   // Mean diagonal of the ARAP matrix at uniform weights: the stiffness scale of one vertex.
   const Eigen::VectorXd uniform = Eigen::VectorXd::Constant(keyCount(), 1.0 / keyCount());
   const ActiveKeys all = activeKeys(uniform);
@@ -155,10 +159,14 @@ Interpolator::Impl::Impl(ThreadLayout layout, const InterpolationParams& params,
   diagonal /= vertexCount();
   stiffnessScale_ = diagonal;
   gradientFloor_ = 1e-13 * diagonal;
-  nonOverlap_ = std::make_unique<NonOverlap>(mesh, options.nonOverlapStiffness * diagonal);
-  const GlobalMatrixSources sources{deformation_.get(), cohesive_.get(), params.nonOverlap ? nonOverlap_.get() : nullptr,
-                                    options.placementStiffness * vertexWeight_, stiffnessScale_};
-  global_ = std::make_unique<GlobalMatrix>(sources, mesh.vertexCount(), std::move(layout.partStart), vertexSplit_.threads());
+  nonOverlap_->setStiffness(options_.nonOverlapStiffness * diagonal);
+}
+
+GlobalMatrixSources Interpolator::Impl::matrixSources() const {
+  GlobalMatrixSources sources{deformation_.get(), cohesive_.get(), nonOverlap_.get(),
+                              options_.placementStiffness * vertexWeight_, stiffnessScale_};
+  sources.enforceNonOverlap = params_.nonOverlap;
+  return sources;
 }
 
 Interpolator::Impl::Frame Interpolator::Impl::makeFrame(const Eigen::VectorXd& w, const VertexSprings* springs) const {
@@ -239,11 +247,6 @@ void Interpolator::Impl::align(const Frame& frame, const State& reference, Eigen
     groupLinks_ = std::move(links);
   }
   alignGroups(x, frame.blend, groups_, vertexSplit_);
-}
-
-void Interpolator::Impl::forgetHistory() {
-  anderson_.reset();
-  global_->invalidate();
 }
 
 EnergyEvaluation Interpolator::Impl::evaluate(const Eigen::MatrixX2d& x, const Eigen::VectorXd& w) const {
@@ -334,6 +337,10 @@ InterpolationResult Interpolator::Impl::solve(const Eigen::VectorXd& w, const Ei
   Eigen::MatrixX2d plain;
   int staleIterations = 0;  // accepted iterations in a row whose set of held pairs H does not model
   while (norm > target && result.iterations < options_.maxIterations) {
+    if (cancelled()) {  // s is the best iterate so far: every accepted step lowered the energy
+      result.cancelled = true;
+      break;
+    }
     const Step outcome = step(frame, s, candidate, plain, result);
     if (outcome == Step::kRefactorized) continue;
     if (outcome == Step::kStalled) break;  // no decrease along the step: reported as not converged
@@ -379,7 +386,6 @@ InterpolationResult Interpolator::solve(const Eigen::VectorXd& w, const Eigen::M
                                         const VertexSprings* springs) {
   return impl_->solve(w, warmStart, springs);
 }
-void Interpolator::forgetHistory() { impl_->forgetHistory(); }
 EnergyEvaluation Interpolator::evaluate(const Eigen::MatrixX2d& x, const Eigen::VectorXd& w) const {
   return impl_->evaluate(x, w);
 }
@@ -391,6 +397,7 @@ double Interpolator::stiffnessScale() const { return impl_->stiffnessScale(); }
 int Interpolator::keyCount() const { return impl_->keyCount(); }
 int Interpolator::vertexCount() const { return impl_->vertexCount(); }
 int Interpolator::threads() const { return impl_->threads(); }
+int Interpolator::triangleCount() const { return impl_->triangleCount(); }
 long Interpolator::factorNonZeros() const { return impl_->factorNonZeros(); }
 
 }  // namespace ib

@@ -35,6 +35,7 @@
 #include "multimesh/multimesh.h"
 
 #include <Eigen/Core>
+#include <atomic>
 #include <memory>
 #include <vector>
 
@@ -79,6 +80,7 @@ struct InterpolationResult {
   double startEnergy = 0;             // the same at the (aligned) start
   double interpolationEnergy = 0;     // W_I alone at x (eq. 9), without the placement tie
   bool converged = false;             // residual below tolerance, or |g| at rounding level; never a small step
+  bool cancelled = false;             // stopped early by the cancel flag (setCancelFlag): x is the best iterate so far
   int factorizations = 0;             // numeric factorizations of H during this solve
   int factorUpdates = 0;              // rank-one updates of H's factor for changed held pairs
   double factorMilliseconds = 0;      // wall time of both, part of milliseconds
@@ -126,6 +128,22 @@ class Interpolator {
   // first frame repeats its frames bit for bit.
   void forgetHistory();
 
+  // Live changes for the next solves (a player's sliders), validated as the constructor validates
+  // (nothing changes when they throw). Neither rebuilds the thread layout, the vertex orderings
+  // or H's sparsity pattern (W_O's entries stay in the pattern, zero while it is off); both
+  // forget the history (as forgetHistory), so H is factorized afresh at the next solve and that
+  // solve gives a fresh Interpolator's result with these values, bit for bit.
+  // lambda, tau, alpha and non-overlap (InputError naming the field).
+  void setParameters(const InterpolationParams& params);
+  // Per-triangle stiffness kappa (t x 1, the multimesh's triangle order): std::invalid_argument
+  // for a wrong size, InputError for a value that is not a finite number > 0. The stiffness scale
+  // (stiffnessScale()) and what is stated relative to it follow.
+  void setStiffness(const Eigen::VectorXd& kappa);
+  // While *flag is true, solve() stops within one iteration and returns the best iterate so far
+  // with cancelled = true (finite, never NaN). Another thread may set it at any time; the caller
+  // clears it. nullptr (the default): never cancelled. The flag must outlive the solves.
+  void setCancelFlag(const std::atomic<bool>* flag);
+
   // Energy and gradient at x for weights w, local-step quantities taken at x (for tests).
   EnergyEvaluation evaluate(const Eigen::MatrixX2d& x, const Eigen::VectorXd& w) const;
 
@@ -140,6 +158,7 @@ class Interpolator {
   int keyCount() const;
   int vertexCount() const;
   int threads() const;         // threads the solve runs on
+  int triangleCount() const;
   long factorNonZeros() const;  // non-zeros of H's Cholesky factor
 
   class Impl;  // interpolator_impl.h: the solver's state, for the solver's own files
@@ -152,5 +171,12 @@ class Interpolator {
 // throws std::invalid_argument otherwise (weights come from a timeline or a front end that
 // normalized them, never straight from a file).
 void validateWeights(const Eigen::VectorXd& w, int keyCount);
+
+// Checks lambda, tau and alpha as the Interpolator does (InputError naming the field).
+void validateInterpolationParams(const InterpolationParams& params);
+
+// Checks per-triangle stiffness as Interpolator::setStiffness does: t entries
+// (std::invalid_argument otherwise), each a finite number > 0 (InputError naming the entry).
+void validateStiffness(const Eigen::VectorXd& kappa, int triangleCount);
 
 }  // namespace ib

@@ -14,6 +14,7 @@
 #include "linalg/anderson.h"
 
 #include <Eigen/Core>
+#include <atomic>
 #include <memory>
 #include <utility>
 #include <vector>
@@ -27,6 +28,9 @@ class Interpolator::Impl {
   InterpolationResult solve(const Eigen::VectorXd& w, const Eigen::MatrixX2d* warmStart, const VertexSprings* springs);
 
   void forgetHistory();
+  void setParameters(const InterpolationParams& params);
+  void setStiffness(const Eigen::VectorXd& kappa);
+  void setCancelFlag(const std::atomic<bool>* flag) { cancel_ = flag; }
 
   EnergyEvaluation evaluate(const Eigen::MatrixX2d& x, const Eigen::VectorXd& w) const;
 
@@ -37,6 +41,7 @@ class Interpolator::Impl {
   int keyCount() const { return static_cast<int>(keys_.size()); }
   int vertexCount() const { return static_cast<int>(keys_.front().rows()); }
   int threads() const { return vertexSplit_.threads(); }
+  int triangleCount() const { return deformation_->triangleCount(); }
   long factorNonZeros() const { return global_->factor().factorNonZeros(); }
 
  private:
@@ -44,6 +49,11 @@ class Interpolator::Impl {
   struct State;
   Impl(ThreadLayout layout, const InterpolationParams& params, const SolverOptions& options);
   double gradientNorm(const Eigen::MatrixX2d& g) const;  // |g|_inf, over the vertex split
+  // The stiffness scale from the current kappa, and what is stated relative to it: the gradient
+  // floor and the W_O penalty (constructor and setStiffness).
+  void updateStiffnessScale();
+  GlobalMatrixSources matrixSources() const;  // what H is built from, with the current parameters
+  bool cancelled() const { return cancel_ && cancel_->load(std::memory_order_relaxed); }
   Frame makeFrame(const Eigen::VectorXd& w, const VertexSprings* springs) const;
   void evaluateState(const Frame& frame, State& state) const;
   // Only what placement groups need: held pairs and non-overlap contacts.
@@ -76,6 +86,7 @@ class Interpolator::Impl {
   // Internally, vertices are numbered as threadLayout() numbers them (see thread_layout.h), and
   // thread p works on the vertices [vertexSplit_.begin(p), vertexSplit_.end(p)) in every loop.
   std::vector<int> originalOf_;            // internal vertex k is the caller's vertex originalOf_[k]
+  std::vector<int> triangleOriginalOf_;    // internal triangle k is the caller's triangle triangleOriginalOf_[k]
   RowSplit vertexSplit_, triangleSplit_;
   double scale_ = 1;                       // shape size s
   std::vector<Eigen::MatrixX2d> keys_;     // X_i / s
@@ -89,6 +100,7 @@ class Interpolator::Impl {
   AndersonAcceleration anderson_;          // history kept across frames
   double gradientFloor_ = 0;               // absolute |g|_inf below which a start is converged
   double stiffnessScale_ = 0;              // see stiffnessScale()
+  const std::atomic<bool>* cancel_ = nullptr;  // setCancelFlag; null: never cancelled
 };
 
 }  // namespace ib

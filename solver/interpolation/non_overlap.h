@@ -30,6 +30,7 @@ class NonOverlap {
   // Every vertex in some B_i (for the preconditioner).
   const std::vector<int>& allBoundaryVertices() const { return allBoundary_; }
   double stiffness() const { return stiffness_; }
+  void setStiffness(double stiffness) { stiffness_ = stiffness; }  // the penalty constant k
 
   // Penalty energy; adds its gradient to gradient (n x 2). contacts receives (boundary vertex,
   // a vertex of the triangle it is inside) for every offender.

@@ -51,7 +51,7 @@ RowSplit alignedSplit(std::vector<int> start) {
 ThreadLayout threadLayout(const Multimesh& mesh, int threads) {
   EliminationPlan plan = planElimination(patternOfH(mesh), threads);
   const int n = mesh.vertexCount();
-  ThreadLayout layout{renumbered(mesh, plan.order), std::move(plan.order), std::move(plan.partStart), {}, {}, {}, {}};
+  ThreadLayout layout{renumbered(mesh, plan.order), std::move(plan.order), std::move(plan.partStart), {}, {}, {}, {}, {}};
   // Thread p owns its part of the factor's unknowns; the last also the top separator.
   std::vector<int> vertexStart = layout.partStart;
   vertexStart.back() = n;
@@ -71,6 +71,7 @@ ThreadLayout threadLayout(const Multimesh& mesh, int threads) {
     ++triangleStart[owner[lowest(t)] + 1];
     layout.kappa(static_cast<Eigen::Index>(layout.triangles.size())) = layout.mesh.stiffness(t);
     layout.triangles.push_back(all[t]);
+    layout.triangleOriginalOf.push_back(t);  // renumbered() keeps the triangles' order
   }
   for (int p = 0; p < threads; ++p) triangleStart[p + 1] += triangleStart[p];
   layout.triangleSplit = alignedSplit(triangleStart);

@@ -20,6 +20,7 @@ struct ThreadLayout {
   std::vector<int> partStart;       // threads + 1 entries: the factor's parts (EliminationPlan::partStart)
   RowSplit vertices;                // thread p's vertices; the last thread's include the top separator
   std::vector<Triangle> triangles;  // mesh's triangles (t), grouped by thread
+  std::vector<int> triangleOriginalOf;  // t entries: triangles[k] is the caller's triangle triangleOriginalOf[k]
   Eigen::VectorXd kappa;            // their stiffness (t x 1), in that order
   RowSplit triangleSplit;           // thread p's triangles in that list
 };

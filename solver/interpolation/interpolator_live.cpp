@@ -1,0 +1,63 @@
+// What changes between an Interpolator's solves without a new setup (a player's sliders): the
+// parameters, the stiffness and the cancel flag, with their checks (interpolator.h).
+#include "interpolation/interpolator_impl.h"
+
+#include "core/error.h"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace ib {
+
+void validateInterpolationParams(const InterpolationParams& p) {
+  const auto require = [](bool ok, const std::string& field, const std::string& rule) {
+    if (!ok) throw InputError("solver option " + field + ": " + rule);
+  };
+  const CohesiveParams& c = p.cohesive;
+  require(std::isfinite(c.lambda) && c.lambda >= 0, "lambda", "must be a finite number >= 0");
+  require(c.tau > 0 && !std::isnan(c.tau), "tau", "must be > 0 (infinity: pairs never separate)");
+  require(c.alpha >= 0 && c.alpha <= 1, "alpha", "must be in [0, 1]");
+}
+
+void validateStiffness(const Eigen::VectorXd& kappa, int triangleCount) {
+  if (kappa.size() != triangleCount)
+    throw std::invalid_argument("stiffness: expected " + std::to_string(triangleCount) + " values (one per triangle), got " +
+                                std::to_string(kappa.size()));
+  for (Eigen::Index k = 0; k < kappa.size(); ++k)
+    if (!(std::isfinite(kappa(k)) && kappa(k) > 0))
+      throw InputError("stiffness: kappa[" + std::to_string(k) + "] = " + std::to_string(kappa(k)) +
+                       " must be a finite number > 0");
+}
+
+void Interpolator::Impl::forgetHistory() {
+  anderson_.reset();
+  global_->invalidate();
+}
+
+void Interpolator::Impl::setParameters(const InterpolationParams& params) {
+  validateInterpolationParams(params);
+  params_ = params;
+  cohesive_->setParams(params.cohesive);
+  // H's spring constants follow lambda and alpha, its boundary entries non-overlap; the pattern
+  // stays (setSources checks), the factor is redone at the next solve.
+  global_->setSources(matrixSources());
+  forgetHistory();
+}
+
+void Interpolator::Impl::setStiffness(const Eigen::VectorXd& kappa) {
+  validateStiffness(kappa, triangleCount());
+  Eigen::VectorXd inLayout(kappa.size());
+  for (Eigen::Index k = 0; k < kappa.size(); ++k) inLayout(k) = kappa(triangleOriginalOf_[k]);
+  deformation_->setStiffness(keys_, inLayout);
+  updateStiffnessScale();
+  global_->setSources(matrixSources());
+  forgetHistory();
+}
+
+void Interpolator::forgetHistory() { impl_->forgetHistory(); }
+void Interpolator::setParameters(const InterpolationParams& params) { impl_->setParameters(params); }
+void Interpolator::setStiffness(const Eigen::VectorXd& kappa) { impl_->setStiffness(kappa); }
+void Interpolator::setCancelFlag(const std::atomic<bool>* flag) { impl_->setCancelFlag(flag); }
+
+}  // namespace ib
