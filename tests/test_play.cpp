@@ -1,15 +1,20 @@
 // `inbetween play` scripted under Xvfb (ctest runs this program through xvfb-run), on lavapipe
 // with the validation layer: the command fails (exit 1) on any validation message, so every run
-// here that exits 0 was silent. Screenshots are read back and checked pixel by pixel against the
+// here that exits 0 was silent. Reloading and saving drive the player's window in-process. Screenshots are read back and checked pixel by pixel against the
 // drawings, mapped through the player's own layout (canvasRect, ViewNavigation).
 #include "core/png_image.h"
 #include "player/player_ui.h"
+#include "player/player_window.h"
 
 #include <catch2/catch.hpp>
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <functional>
 #include <string>
+#include <thread>
 
 using namespace ib;
 
@@ -54,8 +59,9 @@ RgbaImage screenshot(const std::string& name, const std::string& options, int fr
 
 RgbaImage drawing(const std::string& name) { return readPng(std::string(INBETWEEN_ASSETS) + "/square-arch-notch/" + name); }
 
-// Where the readouts panel sits over the picture (play::readoutsPanel): its samples are skipped.
-bool underReadouts(double x, double y) { return x < 330 && y < 230; }
+// Where the readouts panel (play::readoutsPanel) and an error banner (play::messageBanner) sit
+// over the picture: their samples are skipped.
+bool underPanels(double x, double y) { return (x < 330 && y < 230) || y < 140; }
 
 // Compares the screenshot with `art` (a key's drawing, 128 x 128 like the scene's canvas) at every
 // drawing pixel whose 7 x 7 neighbourhood is one colour (shape interiors and the paper away from
@@ -76,7 +82,7 @@ int mismatches(const RgbaImage& shot, const RgbaImage& art, int tolerance, int* 
           for (int c = 0; c < 4; ++c) uniform = uniform && art.at(x + dx, y + dy)[c] == art.at(x, y)[c];
       if (!uniform || (art.at(x, y)[3] != 0 && art.at(x, y)[3] != 255)) continue;
       const Eigen::Vector2d p = play::toWindow(view, kWidth, kHeight, {x + 0.5, y + 0.5});
-      if (underReadouts(p.x(), p.y())) continue;
+      if (underPanels(p.x(), p.y())) continue;
       const uint8_t* got = shot.at(static_cast<int>(p.x()), static_cast<int>(p.y()));
       ++*compared;
       for (int c = 0; c < 3; ++c) {
@@ -96,7 +102,7 @@ int pictureDifference(const RgbaImage& a, const RgbaImage& b) {
   int differ = 0;
   for (int y = 0; y < static_cast<int>(canvas.y1); ++y)
     for (int x = 0; x < static_cast<int>(canvas.x1); ++x) {
-      if (underReadouts(x, y)) continue;
+      if (underPanels(x, y)) continue;
       for (int c = 0; c < 3; ++c)
         if (std::abs(int(a.at(x, y)[c]) - int(b.at(x, y)[c])) > 32) {
           ++differ;
@@ -165,4 +171,105 @@ TEST_CASE("play: without a display exits 2 and says so", "[.window]") {
   INFO(run.output);
   CHECK(run.code == 2);
   CHECK_THAT(run.output, Catch::Contains("inbetween: play: cannot open a window: no display"));
+}
+
+namespace {
+
+// A copy of the square-arch-notch scene in its own temporary folder, to edit.
+fs::path sceneCopy(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("inbetween-play-test-" + name);
+  fs::remove_all(dir);
+  fs::copy(fs::path(INBETWEEN_ASSETS) / "square-arch-notch", dir, fs::copy_options::recursive);
+  return dir;
+}
+
+// Presents frames until `done` holds (true) or `seconds` pass (false).
+bool presentUntil(play::PlayerWindow& window, const std::function<bool()>& done, double seconds) {
+  const auto start = std::chrono::steady_clock::now();
+  while (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() < seconds) {
+    window.frame();
+    if (done()) return true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  return false;
+}
+
+bool hasMessage(play::PlayerSession& session, bool error) {
+  for (const play::PlayerSession::Message& m : session.messages())
+    if (m.error == error) return true;
+  return false;
+}
+
+}  // namespace
+
+TEST_CASE("play: a drawing edited on disk is picked up while playing; a broken scene file keeps the last good one, "
+          "its error shown", "[.window]") {
+  const fs::path dir = sceneCopy("reload");
+  play::PlayerSession session(std::make_unique<play::SceneReloader>((dir / "scene.json").string()), {});
+  session.setWeights(Eigen::Vector2d(1, 0));
+  session.setWeightsMode(true);
+  play::PlayerWindowOptions options;
+  options.width = kWidth;
+  options.height = kHeight;
+  options.validation = true;
+  options.device = vk::DevicePreference::kSoftware;
+  play::PlayerWindow window(session, options);
+  REQUIRE(presentUntil(window, [&] { return session.shown() != nullptr; }, 60));
+
+  RgbaImage red = drawing("square.png");  // the same outline, painted red
+  for (size_t p = 0; p < red.pixels.size(); p += 4)
+    if (red.pixels[p + 3] == 255) red.pixels[p] = 255, red.pixels[p + 1] = red.pixels[p + 2] = 0;
+  writePng((dir / "square.png").string(), red);
+  REQUIRE(presentUntil(window, [&] { return session.scene().drawings[0].at(64, 64)[0] == 255; }, 120));
+  REQUIRE(session.worker().waitIdle(60));
+  RgbaImage shot;
+  REQUIRE(presentUntil(window, [&] { return window.frame(&shot); }, 10));
+  int compared = 0;
+  CHECK(mismatches(shot, red, 3, &compared) == 0);
+  CHECK(compared > 4000);
+
+  std::ofstream(dir / "scene.json") << "{ \"version\": 1, \"keys\": [ broken";
+  REQUIRE(presentUntil(window, [&] { return hasMessage(session, true); }, 60));
+  CHECK_THAT(session.messages().back().text, Catch::Contains("scene.json"));
+  REQUIRE(presentUntil(window, [&] { return window.frame(&shot); }, 10));
+  writePng((fs::temp_directory_path() / "inbetween-play-test-broken.png").string(), shot);
+  CHECK(mismatches(shot, red, 3, &compared) == 0);  // still the last good scene
+  // The error banner (play::messageBanner) at the picture's top right, in its dark red (opaque).
+  const play::PixelRect canvas = play::canvasRect(kWidth, kHeight);
+  const uint8_t* banner = shot.at(static_cast<int>(canvas.x1) - 14, 14);
+  CHECK(std::abs(int(banner[0]) - 82) <= 3);
+  CHECK(std::abs(int(banner[1]) - 26) <= 3);
+  CHECK(std::abs(int(banner[2]) - 26) <= 3);
+  const std::vector<std::string> messages = window.context().validationMessages();
+  INFO((messages.empty() ? std::string() : messages.front()));
+  CHECK(messages.empty());
+}
+
+TEST_CASE("play: Save parameters writes the tuned values into the scene, which then plays the same frames", "[.window]") {
+  const fs::path dir = sceneCopy("save");
+  const std::string path = (dir / "scene.json").string();
+  constexpr int kFrame = 18;  // the notch opening: where tau matters
+  play::PlayerSession tuned(std::make_unique<play::SceneReloader>(path), {});
+  tuned.parameters().set("tau", 0.004);
+  tuned.parameters().set("lambda", 2500);
+  tuned.update(0);
+  tuned.transport().goTo(kFrame);
+  tuned.update(0);
+  REQUIRE(tuned.worker().waitIdle(120));
+  const std::shared_ptr<const AnimationFrame> before = tuned.worker().cached(kFrame);
+  REQUIRE(before);
+  tuned.saveParameters();
+  REQUIRE_FALSE(hasMessage(tuned, true));
+
+  play::PlayerSession saved(std::make_unique<play::SceneReloader>(path), {});
+  CHECK(saved.parameters().get("tau") == 0.004);
+  CHECK(saved.parameters().get("lambda") == 2500);
+  for (const play::Parameter& p : saved.parameters().all()) CHECK(p.value == p.initial);
+  saved.transport().goTo(kFrame);
+  saved.update(0);
+  REQUIRE(saved.worker().waitIdle(120));
+  const std::shared_ptr<const AnimationFrame> after = saved.worker().cached(kFrame);
+  REQUIRE(after);
+  // The same multimesh and parameters: the same solve, up to the solver's run-to-run rounding.
+  CHECK((after->x - before->x).cwiseAbs().maxCoeff() < 1e-9);
 }

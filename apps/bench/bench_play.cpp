@@ -23,13 +23,13 @@ namespace {
 
 constexpr const char* kUsage =
     "usage: inbetween bench play [--assets DIR] [--scenes LIST] [--size WxH] [--frames N] [--changes N]\n"
-    "                            [--edge-length PX] [--device D] [--vsync]\n"
+    "                            [--edge-length PX] [--samples N] [--device D] [--vsync]\n"
     "\n"
     "Opens the player's window (UI included) on every scene DIR/NAME/scene.json and plays its timeline\n"
     "for N presented frames after a warm-up, then changes tau back and forth N' times while paused and\n"
     "times each change until the first presented frame solved with it. Needs a display: run under\n"
     "`xvfb-run -a -s \"-screen 0 1920x1080x24\"` without one. One JSON line per scene: scene, vertices,\n"
-    "triangles, keys, width, height, device, vsync, frames, fps, p50_ms, p95_ms, changes,\n"
+    "triangles, keys, width, height, samples, device, vsync, frames, fps, p50_ms, p95_ms, changes,\n"
     "latency_ms (median), latency_max_ms.\n"
     "\n"
     "  --assets DIR   folder of scenes (default: the source tree's assets/)\n"
@@ -39,6 +39,7 @@ constexpr const char* kUsage =
     "  --changes N    parameter changes timed (default 8)\n"
     "  --edge-length PX  mesh every scene at this boundary edge length instead of its own (a copy of\n"
     "                 the scene in a temporary folder; e.g. 1.2 for about 10k vertices on square-arch-notch)\n"
+    "  --samples N    MSAA samples (default 4, as the player)\n"
     "  --device D     any, gpu or cpu (default cpu: lavapipe, comparable across machines)\n"
     "  --vsync        present with vsync (default off: the frame rate the player can reach)\n";
 
@@ -109,6 +110,7 @@ nlohmann::json benchScene(const std::filesystem::path& file, const play::PlayerW
           {"keys", mesh.keyCount()},
           {"width", options.width},
           {"height", options.height},
+          {"samples", options.samples},
           {"device", window.context().deviceName()},
           {"vsync", options.vsync},
           {"frames", frames},
@@ -137,6 +139,7 @@ void run(const cli::Arguments& a, const BenchOutput& output) {
   options.width = size[0];
   options.height = size[1];
   options.vsync = a.flag("vsync");
+  options.samples = a.integer("samples", 4, 1, 64);
   const std::string device = a.value("device", "cpu");
   if (device == "gpu") options.device = vk::DevicePreference::kHardware;
   else if (device == "cpu") options.device = vk::DevicePreference::kSoftware;
@@ -171,7 +174,7 @@ void run(const cli::Arguments& a, const BenchOutput& output) {
 
 Benchmark playBenchmark() {
   return {"play", "the player's window: fps, frame times, parameter latency", kUsage,
-          {"assets", "scenes", "size", "frames", "changes", "edge-length", "device"}, {"vsync"}, run};
+          {"assets", "scenes", "size", "frames", "changes", "edge-length", "samples", "device"}, {"vsync"}, run};
 }
 
 }  // namespace ib

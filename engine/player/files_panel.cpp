@@ -48,7 +48,7 @@ void messageBanner(PlayerSession& session, const UiState& ui) {
   const float width = std::min(560.0f, static_cast<float>(ui.canvas.x1 - ui.canvas.x0) - 300);
   ImGui::SetNextWindowPos(ImVec2(static_cast<float>(ui.canvas.x1) - width - 10, static_cast<float>(ui.canvas.y0) + 10));
   ImGui::SetNextWindowSize(ImVec2(width, 0));
-  ImGui::PushStyleColor(ImGuiCol_WindowBg, ImVec4(0.32f, 0.10f, 0.10f, 0.94f));
+  ImGui::PushStyleColor(ImGuiCol_WindowBg, ImVec4(0.32f, 0.10f, 0.10f, 1.00f));
   ImGui::Begin("Error", nullptr,
                ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
                    ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoSavedSettings);
