@@ -3,10 +3,8 @@
 #include "bench/bench.h"
 #include "commands/mesh_command.h"
 #ifdef INBETWEEN_WITH_ENGINE
-#include "commands/render_command.h"
-#endif
-#ifdef INBETWEEN_WITH_PLAYER
 #include "commands/play_command.h"
+#include "commands/render_command.h"
 #endif
 #include "core/error.h"
 
@@ -51,13 +49,10 @@ int run(const std::vector<std::string>& args) {
   if (command == "mesh") return ib::runMesh(rest);
 #ifdef INBETWEEN_WITH_ENGINE
   if (command == "render") return ib::runRender(rest);
-#else
-  if (command == "render") throw ib::InputError("render: this inbetween was built without the engine (INBETWEEN_ENGINE=OFF)");
-#endif
-#ifdef INBETWEEN_WITH_PLAYER
   if (command == "play") return ib::runPlay(rest);
 #else
-  if (command == "play") throw ib::InputError("play: this inbetween was built without the player (INBETWEEN_ENGINE=OFF)");
+  if (command == "render" || command == "play")
+    throw ib::InputError(command + ": this inbetween was built without the engine (INBETWEEN_ENGINE=OFF)");
 #endif
   throw ib::InputError("unknown command '" + command + "' (see `inbetween --help`)");
 }

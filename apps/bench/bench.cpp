@@ -45,10 +45,7 @@ namespace {
 std::vector<Benchmark> benchmarks() {
   return {interpBenchmark(), comeshBenchmark(), animBenchmark(),
 #ifdef INBETWEEN_WITH_ENGINE
-          renderBenchmark(),
-#endif
-#ifdef INBETWEEN_WITH_PLAYER
-          playBenchmark(),
+          renderBenchmark(), playBenchmark(),
 #endif
           cutBenchmark()};
 }
@@ -84,7 +81,7 @@ int runBench(const std::vector<std::string>& args) {
     b.run(arguments, BenchOutput(b.name));
     return 0;
   }
-#ifndef INBETWEEN_WITH_PLAYER
+#ifndef INBETWEEN_WITH_ENGINE
   if (args[0] == "render" || args[0] == "play")
     throw InputError("bench " + args[0] + ": this inbetween was built without the engine (INBETWEEN_ENGINE=OFF)");
 #endif

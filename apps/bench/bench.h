@@ -41,8 +41,6 @@ Benchmark comeshBenchmark();
 Benchmark animBenchmark();
 #ifdef INBETWEEN_WITH_ENGINE
 Benchmark renderBenchmark();
-#endif
-#ifdef INBETWEEN_WITH_PLAYER
 Benchmark playBenchmark();
 #endif
 Benchmark cutBenchmark();

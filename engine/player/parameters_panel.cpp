@@ -18,24 +18,33 @@ bool dynamicsParameter(const std::string& name) {
          name == "wind_x" || name == "wind_y" || name == "anchor";
 }
 
+// One row: the slider (or checkbox) showing the value, and the default too once it has moved;
+// the name, in the accent colour when moved; a reset button.
 void parameterRow(PlayerSession& session, const Parameter& p) {
   LiveParameters& params = session.parameters();
   ImGui::PushID(p.name.c_str());
   const float resetWidth = 22;
+  const bool moved = p.value != p.initial;
+  char format[64];
+  std::snprintf(format, sizeof format, moved ? "%%.4g  (default %.4g)" : "%%.4g", p.initial);
   bool changed = false;
   double value = p.value;
   if (p.toggle) {
     bool on = p.value != 0;
-    changed = ImGui::Checkbox(p.name.c_str(), &on);
+    changed = ImGui::Checkbox("##on", &on);
     value = on ? 1 : 0;
+    if (moved) {
+      ImGui::SameLine();
+      ImGui::TextDisabled("default %s", p.initial != 0 ? "on" : "off");
+    }
   } else {
-    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - 110 - resetWidth);
+    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - 100 - resetWidth);
     const ImGuiSliderFlags flags = p.logScale ? ImGuiSliderFlags_Logarithmic : ImGuiSliderFlags_None;
-    changed = ImGui::SliderScalar(p.name.c_str(), ImGuiDataType_Double, &value, &p.min, &p.max, "%.4g", flags);
+    changed = ImGui::SliderScalar("##value", ImGuiDataType_Double, &value, &p.min, &p.max, format, flags);
   }
   if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("%s\ndefault %g, range %g..%g%s\nCtrl+click to type a value",
-                      p.help.c_str(), p.initial, p.min, p.max, p.logScale ? " (log scale)" : "");
+    ImGui::SetTooltip("%s\ndefault (the scene's) %g, range %g..%g%s\nCtrl+click to type a value", p.help.c_str(), p.initial,
+                      p.min, p.max, p.logScale ? ", log scale" : "");
   if (changed) {
     try {
       params.set(p.name, value);
@@ -43,16 +52,14 @@ void parameterRow(PlayerSession& session, const Parameter& p) {
       session.messages().push_back({e.what(), true});
     }
   }
+  ImGui::SameLine(ImGui::GetWindowContentRegionMax().x - 94 - resetWidth);
+  if (moved) ImGui::TextColored(ImVec4(0.96f, 0.70f, 0.35f, 1), "%s", p.name.c_str());
+  else ImGui::TextUnformatted(p.name.c_str());
   ImGui::SameLine(ImGui::GetWindowContentRegionMax().x - resetWidth);
-  const bool moved = p.value != p.initial;
   if (!moved) ImGui::BeginDisabled();
   if (ImGui::SmallButton("R")) params.reset(p.name);
   if (!moved) ImGui::EndDisabled();
   if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) ImGui::SetTooltip("Reset to the scene's %g", p.initial);
-  if (moved) {
-    ImGui::SameLine(ImGui::GetWindowContentRegionMax().x - resetWidth - 78);
-    ImGui::TextDisabled("(was %.3g)", p.initial);
-  }
   ImGui::PopID();
 }
 

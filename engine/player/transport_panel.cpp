@@ -54,7 +54,9 @@ void scrubber(PlayerSession& session) {
     const bool key = mark.label != "breakdown";
     const float r = key ? 6.0f : 4.5f;
     draw->AddQuadFilled(ImVec2(x, y - r), ImVec2(x + r, y), ImVec2(x, y + r), ImVec2(x - r, y), key ? kKeyMark : kBreakdown);
-    draw->AddText(ImVec2(x + r + 2, origin.y), key ? kKeyMark : kBreakdown, mark.label.c_str());
+    const float textWidth = ImGui::CalcTextSize(mark.label.c_str()).x;  // left of the mark where the track ends
+    const float textX = x + r + 2 + textWidth > origin.x + width ? x - r - 2 - textWidth : x + r + 2;
+    draw->AddText(ImVec2(textX, origin.y), key ? kKeyMark : kBreakdown, mark.label.c_str());
   }
   if (!weights) {
     const float x = xOf(transport.frame());
