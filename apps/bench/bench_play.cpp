@@ -39,7 +39,7 @@ constexpr const char* kUsage =
     "  --changes N    parameter changes timed (default 8)\n"
     "  --edge-length PX  mesh every scene at this boundary edge length instead of its own (a copy of\n"
     "                 the scene in a temporary folder; e.g. 1.2 for about 10k vertices on square-arch-notch)\n"
-    "  --samples N    MSAA samples (default 4, as the player)\n"
+    "  --samples N    MSAA samples (default 2, as the player)\n"
     "  --device D     any, gpu or cpu (default cpu: lavapipe, comparable across machines)\n"
     "  --vsync        present with vsync (default off: the frame rate the player can reach)\n";
 
@@ -139,7 +139,7 @@ void run(const cli::Arguments& a, const BenchOutput& output) {
   options.width = size[0];
   options.height = size[1];
   options.vsync = a.flag("vsync");
-  options.samples = a.integer("samples", 4, 1, 64);
+  options.samples = a.integer("samples", options.samples, 1, 64);
   const std::string device = a.value("device", "cpu");
   if (device == "gpu") options.device = vk::DevicePreference::kHardware;
   else if (device == "cpu") options.device = vk::DevicePreference::kSoftware;

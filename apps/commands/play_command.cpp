@@ -33,7 +33,7 @@ constexpr const char* kUsage =
     "                      non_overlap, dynamics, epsilon, mu, gravity_x, gravity_y, wind_x, wind_y, anchor\n"
     "  --weights K=W,...   weights mode at these weights (K a key's name or index; others 0; normalized)\n"
     "  --size WxH          window size in pixels (default 1280x720)\n"
-    "  --samples N         multisample anti-aliasing samples (default 4)\n"
+    "  --samples N         multisample anti-aliasing samples (default 2)\n"
     "  --no-vsync          present as fast as possible (mailbox or immediate)\n"
     "  --device D          any (default: a GPU if present, else lavapipe), gpu or cpu\n"
     "  --validation        run with the Khronos validation layer; any message is an error\n"
@@ -142,7 +142,7 @@ int runPlay(const std::vector<std::string>& rawArgs) {
     windowOptions.width = size[0];
     windowOptions.height = size[1];
   }
-  windowOptions.samples = arguments.integer("samples", 4, 1, 64);
+  windowOptions.samples = arguments.integer("samples", windowOptions.samples, 1, 64);
   windowOptions.vsync = !arguments.flag("no-vsync");
   windowOptions.validation = arguments.flag("validation");
   const std::string device = arguments.value("device", "any");
