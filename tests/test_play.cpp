@@ -5,7 +5,10 @@
 #include "core/png_image.h"
 #include "player/player_ui.h"
 #include "player/player_window.h"
+#include "player/shortcuts.h"
 
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
 #include <catch2/catch.hpp>
 #include <chrono>
 #include <cstdio>
@@ -272,4 +275,38 @@ TEST_CASE("play: Save parameters writes the tuned values into the scene, which t
   REQUIRE(after);
   // The same multimesh and parameters: the same solve, up to the solver's run-to-run rounding.
   CHECK((after->x - before->x).cwiseAbs().maxCoeff() < 1e-9);
+}
+
+TEST_CASE("play: the keyboard shortcuts drive the transport, weights mode, the overlays and closing", "[.window]") {
+  play::PlayerSession session(std::make_unique<play::SceneReloader>(kScene), {});
+  play::UiState ui;
+  play::Transport& transport = session.transport();
+  CHECK(play::applyShortcut(GLFW_KEY_SPACE, false, session, ui));
+  CHECK(transport.playing());
+  CHECK(play::applyShortcut(GLFW_KEY_SPACE, false, session, ui));
+  CHECK_FALSE(transport.playing());
+  play::applyShortcut(GLFW_KEY_RIGHT, false, session, ui);
+  CHECK(transport.frame() == 1);
+  play::applyShortcut(GLFW_KEY_UP, false, session, ui);
+  CHECK(transport.frame() == 11);
+  play::applyShortcut(GLFW_KEY_DOWN, false, session, ui);
+  play::applyShortcut(GLFW_KEY_LEFT, false, session, ui);
+  CHECK(transport.frame() == 0);
+  play::applyShortcut(GLFW_KEY_END, false, session, ui);
+  CHECK(transport.frame() == transport.frameCount() - 1);
+  play::applyShortcut(GLFW_KEY_HOME, false, session, ui);
+  CHECK(transport.frame() == 0);
+  const bool loop = transport.loop();
+  play::applyShortcut(GLFW_KEY_L, false, session, ui);
+  CHECK(transport.loop() != loop);
+  play::applyShortcut(GLFW_KEY_W, false, session, ui);
+  CHECK(session.weightsMode());
+  play::applyShortcut(GLFW_KEY_1, false, session, ui);
+  CHECK(ui.view.overlays.wireframe);
+  play::applyShortcut(GLFW_KEY_F12, false, session, ui);
+  CHECK(ui.screenshotRequested);
+  play::applyShortcut(GLFW_KEY_ESCAPE, false, session, ui);
+  CHECK(ui.closeRequested);
+  CHECK_FALSE(play::applyShortcut(GLFW_KEY_Q, false, session, ui));
+  CHECK(play::shortcutHelp().size() >= 15);  // every key above is listed for the help panel
 }

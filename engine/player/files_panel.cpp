@@ -2,6 +2,7 @@
 // reload's progress, reload and save, the screenshot key, and the messages; the latest error as a
 // banner over the picture; and the help panel listing every shortcut.
 #include "player/player_ui.h"
+#include "player/shortcuts.h"
 
 #include <imgui.h>
 
@@ -61,32 +62,15 @@ void messageBanner(PlayerSession& session, const UiState& ui) {
 }
 
 void helpPanel() {
-  static constexpr const char* kShortcuts[][2] = {
-      {"Space", "play / pause"},
-      {"Left / Right", "one frame back / forward"},
-      {"Down / Up", "ten frames back / forward"},
-      {"Home / End", "to the in / out point"},
-      {"L", "loop on / off"},
-      {"P", "ping-pong on / off"},
-      {"I / O", "in / out point at the current frame"},
-      {"[ / ]", "slower / faster"},
-      {"W", "weights mode on / off"},
-      {"F", "fit the drawing to the window"},
-      {"wheel / drag", "zoom at the pointer / pan"},
-      {"1 / 2 / 3", "wireframe / cohesive edges / features"},
-      {"Ctrl+S", "save parameters into the scene"},
-      {"F12", "screenshot (PNG, UI included)"},
-      {"Esc", "close the player"},
-  };
   if (ImGui::BeginTable("shortcuts", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
     ImGui::TableSetupColumn("key", ImGuiTableColumnFlags_WidthFixed, 110);
     ImGui::TableSetupColumn("does");
-    for (const auto& row : kShortcuts) {
+    for (const ShortcutHelp& row : shortcutHelp()) {
       ImGui::TableNextRow();
       ImGui::TableSetColumnIndex(0);
-      ImGui::TextColored(ImVec4(0.96f, 0.70f, 0.35f, 1), "%s", row[0]);
+      ImGui::TextColored(ImVec4(0.96f, 0.70f, 0.35f, 1), "%s", row.keys);
       ImGui::TableSetColumnIndex(1);
-      ImGui::TextUnformatted(row[1]);
+      ImGui::TextUnformatted(row.does);
     }
     ImGui::EndTable();
   }

@@ -36,6 +36,7 @@ struct UiState {
   int width = 0, height = 0;  // window pixels
   bool weightsModeShown = false;  // weights mode was on last frame (its tab is brought forward once)
   bool screenshotRequested = false;
+  bool closeRequested = false;  // Esc: the window closes
   std::string screenshotPath;  // where F12 writes; empty: inbetween-NNNN.png in the current folder
   int screenshots = 0;
 };

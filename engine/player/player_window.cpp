@@ -1,6 +1,7 @@
 #include "player/player_window.h"
 
 #include "core/error.h"
+#include "player/shortcuts.h"
 #include "gpu/vulkan_check.h"
 
 #include <imgui.h>
@@ -8,6 +9,7 @@
 #include <GLFW/glfw3.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <deque>
 
@@ -29,8 +31,6 @@ void onDrop(GLFWwindow*, int count, const char** paths) {
   auto* window = static_cast<PlayerWindow*>(ImGui::GetIO().UserData);
   if (window) window->dropped(std::vector<std::string>(paths, paths + count));
 }
-
-bool pressed(int key) { return ImGui::IsKeyPressed(key, true); }
 
 }  // namespace
 
@@ -58,7 +58,8 @@ void PlayerWindow::dropped(const std::vector<std::string>& paths) {
 bool PlayerWindow::shouldClose() const { return presenter_->window().shouldClose(); }
 
 void PlayerWindow::run() {
-  while (!shouldClose()) frame();
+  while (!shouldClose())
+    if (!frame() && presenter_->window().framebufferSize().width == 0) vk::pollWindowEvents(true);  // minimized: sleep
 }
 
 render::ViewBox PlayerWindow::contentBox() const {
@@ -72,30 +73,11 @@ render::ViewBox PlayerWindow::contentBox() const {
 
 void PlayerWindow::handleInput(const render::ViewBox& content) {
   const ImGuiIO& io = ImGui::GetIO();
-  Transport& transport = session_.transport();
-  if (!io.WantTextInput) {
-    if (pressed(GLFW_KEY_SPACE)) transport.toggle();
-    if (pressed(GLFW_KEY_LEFT)) transport.step(-1);
-    if (pressed(GLFW_KEY_RIGHT)) transport.step(1);
-    if (pressed(GLFW_KEY_DOWN)) transport.step(-10);
-    if (pressed(GLFW_KEY_UP)) transport.step(10);
-    if (pressed(GLFW_KEY_HOME)) transport.toStart();
-    if (pressed(GLFW_KEY_END)) transport.toEnd();
-    if (pressed(GLFW_KEY_L)) transport.setLoop(!transport.loop());
-    if (pressed(GLFW_KEY_P)) transport.setPingPong(!transport.pingPong());
-    if (pressed(GLFW_KEY_I)) transport.setRange(transport.frame(), std::max(transport.frame(), transport.out()));
-    if (pressed(GLFW_KEY_O)) transport.setRange(std::min(transport.frame(), transport.in()), transport.frame());
-    if (pressed(GLFW_KEY_LEFT_BRACKET)) transport.setSpeed(transport.speed() / 1.25);
-    if (pressed(GLFW_KEY_RIGHT_BRACKET)) transport.setSpeed(transport.speed() * 1.25);
-    if (pressed(GLFW_KEY_W)) session_.setWeightsMode(!session_.weightsMode());
-    if (pressed(GLFW_KEY_F)) ui_.navigation.fit();
-    if (pressed(GLFW_KEY_1)) ui_.view.overlays.wireframe = !ui_.view.overlays.wireframe;
-    if (pressed(GLFW_KEY_2)) ui_.view.overlays.cohesive = !ui_.view.overlays.cohesive;
-    if (pressed(GLFW_KEY_3)) ui_.view.overlays.features = !ui_.view.overlays.features;
-    if (io.KeyCtrl && pressed(GLFW_KEY_S)) session_.saveParameters();
-    if (pressed(GLFW_KEY_F12)) ui_.screenshotRequested = true;
-    if (pressed(GLFW_KEY_ESCAPE)) glfwSetWindowShouldClose(presenter_->window().get(), GLFW_TRUE);
-  }
+  // Shortcuts unless a text field has the keyboard; each key once per press, repeating while held.
+  if (!io.WantTextInput)
+    for (int key = 0; key < IM_ARRAYSIZE(io.KeysDown); ++key)
+      if (ImGui::IsKeyPressed(key, true)) applyShortcut(key, io.KeyCtrl, session_, ui_);
+  if (ui_.closeRequested) glfwSetWindowShouldClose(presenter_->window().get(), GLFW_TRUE);
   if (io.WantCaptureMouse || !ui_.canvas.contains(io.MousePos.x, io.MousePos.y)) return;
   if (io.MouseWheel != 0)
     ui_.navigation.zoomAt(std::pow(1.15, io.MouseWheel), io.MousePos.x, io.MousePos.y, content, ui_.canvas, ui_.width,
