@@ -42,7 +42,8 @@ void scrubber(PlayerSession& session) {
   draw->AddRectFilled(ImVec2(origin.x, top), ImVec2(origin.x + width, bottom), kTrack, 3);
   draw->AddRectFilled(ImVec2(xOf(transport.in()) - 2, top), ImVec2(xOf(transport.out()) + 2, bottom), kRange, 3);
   for (int f = 0; f < frames; ++f)
-    if (session.cachedFrame(f)) draw->AddLine(ImVec2(xOf(f) - 1, bottom - 2), ImVec2(xOf(f) + 2, bottom - 2), kCached, 3);
+    if (session.cachedFrame(f))
+      draw->AddLine(ImVec2(xOf(std::max(0.0, f - 0.5)), bottom - 2), ImVec2(xOf(std::min(frames - 1.0, f + 0.5)), bottom - 2), kCached, 3);
   const float spacing = (width - 12) / std::max(1, frames - 1);
   const int every = spacing >= 6 ? 1 : spacing >= 1.5f ? 5 : 10;
   for (int f = 0; f < frames; f += every)
