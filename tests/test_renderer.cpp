@@ -149,3 +149,48 @@ TEST_CASE("renderer: artwork drawn at a quarter of its size is filtered, not ali
   CHECK(highest < 127.5 + 8);
   CHECK(context.validationMessages().empty());
 }
+
+TEST_CASE("renderer: nearest sampling keeps magnified texels hard, linear blends them, switched per frame") {
+  const vk::VulkanContext context = test::validatedContext();
+  const Multimesh mesh = squareGrid(3, 0, 0, 4, 1);
+  // A 4 x 4 checkerboard of two opaque colours, every channel different, drawn 16x on a 64 x 64 target.
+  const Colour a{230, 40, 30, 255}, b{20, 90, 220, 255};
+  const RenderMesh scene = renderMeshOf(mesh, {paintedImage(4, 4, [&](int x, int y) { return (x + y) % 2 ? b : a; })});
+  OffscreenRenderer renderer(context, scene, squareTarget(64));
+  const Eigen::MatrixX2d x = mesh.keyPositions(0);
+  FrameDraw frame = frameOf(x, Eigen::VectorXd::Ones(1), {0, 0, 4, 4});
+  // The larger of a pixel's distances (any channel, in 1/255) to colour a and to colour b.
+  const auto distances = [&](const RgbaImage& image, int px, int py) {
+    const std::array<double, 4> p = pixel(image, px, py);
+    std::array<double, 2> d{0, 0};
+    for (int c = 0; c < 4; ++c) {
+      d[0] = std::max(d[0], std::abs(p[c] - a[c]));
+      d[1] = std::max(d[1], std::abs(p[c] - b[c]));
+    }
+    return d;
+  };
+  for (const Sampling sampling : {Sampling::kNearest, Sampling::kLinear, Sampling::kNearest}) {
+    frame.sampling = sampling;
+    const RgbaImage image = renderer.render(frame);
+    int exact = 0, intermediate = 0, checked = 0;
+    for (int py = 0; py < 64; ++py)
+      for (int px = 0; px < 64; ++px) {
+        if (px % 16 == 0 || px % 16 == 15 || py % 16 == 0 || py % 16 == 15) continue;  // beside a texel edge
+        ++checked;
+        const std::array<double, 2> d = distances(image, px, py);
+        if (std::min(d[0], d[1]) <= 1) ++exact;
+        if (std::min(d[0], d[1]) > 16) ++intermediate;
+      }
+    INFO((sampling == Sampling::kNearest ? "nearest" : "linear") << ": " << exact << " of " << checked
+                                                                 << " pixels exact, " << intermediate << " intermediate");
+    if (sampling == Sampling::kNearest) {
+      CHECK(exact == checked);
+    } else {
+      CHECK(intermediate > checked / 2);
+      // Just left of the edge between texels 1 and 2 of row 0, the two colours half and half (within 10%).
+      const std::array<double, 4> p = pixel(image, 31, 8);
+      for (int c = 0; c < 3; ++c) CHECK(std::abs(p[c] - 0.5 * (a[c] + b[c])) <= 0.1 * std::abs(a[c] - b[c]));
+    }
+  }
+  CHECK(context.validationMessages().empty());
+}

@@ -38,6 +38,8 @@ constexpr const char* kUsage =
     "  --fps N              frame rate; default the scene's timeline's (24 without one)\n"
     "  --background C       transparent (default), or a colour RRGGBB / RRGGBBAA\n"
     "  --samples N          multisample anti-aliasing samples (default 4)\n"
+    "  --sampling S         how the drawings' texels are filtered: linear (default, trilinear) or\n"
+    "                       nearest (magnified pixel art stays crisp)\n"
     "  --wireframe          draw the mesh's edges\n"
     "  --cohesive           draw the cohesive edges of the keys in play, red\n"
     "  --features           draw the feature vertices, blue\n"
@@ -74,8 +76,8 @@ int runRender(const std::vector<std::string>& rawArgs) {
   const std::vector<std::string> args = cli::expandShortOutput(rawArgs);
   if (cli::printHelpIfAsked(args, kUsage)) return 0;
   const cli::Arguments arguments("render", args,
-                                 {"output", "frames", "size", "fps", "background", "samples", "onion", "sheet-every", "mesh",
-                                  "device", "threads"},
+                                 {"output", "frames", "size", "fps", "background", "samples", "sampling", "onion", "sheet-every",
+                                  "mesh", "device", "threads"},
                                  {"wireframe", "cohesive", "features", "no-comesh", "validation"});
   if (arguments.positional().size() != 1) throw InputError("render: needs exactly one SCENE file (see `inbetween render --help`)");
   const std::string scenePath = arguments.positional()[0];
@@ -141,7 +143,8 @@ int runRender(const std::vector<std::string>& rawArgs) {
   onion.neighbours = options.onion;
   auto draw = [&](const std::deque<AnimationFrame>& window, size_t at) {
     const AnimationFrame& frame = window[at];
-    const render::FrameDraw request = render::frameWithOnionSkins(window, at, onion, view, options.overlays);
+    render::FrameDraw request = render::frameWithOnionSkins(window, at, onion, view, options.overlays);
+    request.sampling = options.sampling;
     renderer.submit(request);
     inFlight.push_back(frame.index);
     while (static_cast<int>(inFlight.size()) > 2) collect();

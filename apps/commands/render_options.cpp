@@ -80,6 +80,10 @@ RenderOptions parseRenderOptions(const cli::Arguments& a) {
   o.overlays.wireframe = a.flag("wireframe");
   o.overlays.cohesive = a.flag("cohesive");
   o.overlays.features = a.flag("features");
+  const std::string sampling = a.value("sampling", "linear");
+  if (sampling == "linear") o.sampling = render::Sampling::kLinear;
+  else if (sampling == "nearest") o.sampling = render::Sampling::kNearest;
+  else throw InputError("--sampling: '" + sampling + "' is not linear or nearest");
   o.onion = a.integer("onion", 0, 0, render::kMaxOnionSkins / 2);
   o.sheetEvery = a.integer("sheet-every", 0, 0, 100000);
   o.mesh.meshFile = a.value("mesh", "");

@@ -20,6 +20,7 @@ struct RenderOptions {
   std::optional<double> fps;           // --fps N; default the scene's timeline's
   render::OffscreenOptions target;     // --samples, --background (size filled in later)
   render::Overlays overlays;           // --wireframe, --cohesive, --features
+  render::Sampling sampling = render::Sampling::kLinear;  // --sampling linear|nearest
   int onion = 0;                       // --onion N: neighbouring frames each side, 0..2
   int sheetEvery = 0;                  // --sheet-every K: every k-th frame on the sheet; 0 = at most 36 tiles
   SceneMultimeshOptions mesh;          // --mesh FILE, --no-comesh

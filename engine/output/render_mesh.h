@@ -1,6 +1,6 @@
 // What the renderer draws: the multimesh's topology, each key's UVs (its positions over its
 // drawing's size) and artwork, and the overlay geometry (edges, cohesive edges, features); plus
-// one frame's request (positions, weights, view, overlays, onion skins).
+// one frame's request (positions, weights, view, overlays, onion skins, sampling).
 #pragma once
 
 #include "core/png_image.h"
@@ -105,6 +105,11 @@ struct Overlays {
   float featureSize = 6;   // target pixels: side of a feature's square
 };
 
+// How the drawings' texels are filtered. kLinear: trilinear, over the mip chain (line art smooth at
+// any size). kNearest: the nearest texel of the nearest mip level, so magnified pixel art keeps hard
+// pixel edges (at 1:1 and larger every pixel is one texel of the drawing).
+enum class Sampling { kLinear, kNearest };
+
 struct FrameDraw {
   const Eigen::MatrixX2d* positions = nullptr;  // n x 2: current positions x, drawing pixels
   Eigen::VectorXd weights;                      // m convex weights; keys with weight 0 are not drawn
@@ -112,6 +117,7 @@ struct FrameDraw {
   ViewBox view;                                 // what part of the drawing plane the target shows
   Overlays overlays;
   std::vector<OnionSkin> onion;                 // at most kMaxOnionSkins, drawn first
+  Sampling sampling = Sampling::kLinear;        // how the drawings' texels are filtered (onion skins too)
 };
 
 constexpr int kMaxOnionSkins = 4;

@@ -17,6 +17,7 @@ struct ViewSettings {
   bool heldPairs = true;  // with the cohesive edges: the pairs that hold marked (green)
   render::OnionStyle onion;
   render::Backdrop backdrop{{0.80f, 0.80f, 0.81f}, false, {0.66f, 0.66f, 0.67f}, 12};
+  render::Sampling sampling = render::Sampling::kLinear;  // nearest: magnified pixel art stays crisp
 };
 
 // Times of the last frames, for the readouts' graph.

@@ -150,6 +150,7 @@ bool PlayerWindow::frame(RgbaImage* capture) {
     draw = render::frameWithOnionSkins(window, at, style, view, ui_.view.overlays);
     heldPairMarks(session_, window[at], view, ui_);
   }
+  draw.sampling = ui_.view.sampling;
   presenter_->setBackdrop(ui_.view.backdrop);
   const render::Overlay overlay = imgui_->endFrame();
   RgbaImage shot;

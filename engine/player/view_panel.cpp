@@ -1,6 +1,6 @@
 // The view: overlays (wireframe, cohesive edges with the held pairs marked, features), onion
-// skins, the backdrop, zoom and fit, and which multimesh plays; plus the side panel's tabs that
-// hold every panel, and the held-pair marks drawn over the picture.
+// skins, the backdrop, zoom and fit, the artwork's sampling and which multimesh plays; plus the
+// side panel's tabs that hold every panel, and the held-pair marks drawn over the picture.
 #include "player/player_ui.h"
 
 #include <imgui.h>
@@ -53,9 +53,12 @@ void viewPanel(PlayerSession& session, UiState& ui) {
   ImGui::SameLine();
   if (ImGui::SmallButton("Fit (F)")) ui.navigation.fit();
   ImGui::TextDisabled("wheel: zoom at the pointer; drag: pan");
-  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-  ImGui::TextWrapped("Nearest-neighbour sampling is not offered: the renderer samples the artwork trilinearly.");
-  ImGui::PopStyleColor();
+  bool nearest = view.sampling == render::Sampling::kNearest;
+  if (ImGui::Checkbox("Nearest-neighbour sampling (pixel art)", &nearest))
+    view.sampling = nearest ? render::Sampling::kNearest : render::Sampling::kLinear;
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Each pixel shows the drawing's nearest texel, so magnified pixel art keeps hard edges;\n"
+                      "off: trilinear filtering, smooth line art at any zoom");
 
   ImGui::Spacing();
   ImGui::TextDisabled("Multimesh");

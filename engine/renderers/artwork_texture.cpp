@@ -19,16 +19,18 @@ RgbaImage premultiplied(const RgbaImage& image) {
 
 namespace {
 
-SamplerObject createSampler(VkDevice device) {
+// Trilinear (`nearest` false): shrunk line art neither shimmers nor pops between levels. Nearest:
+// texels and mip levels alike, so no two texels are ever mixed and magnified pixel edges stay hard.
+SamplerObject createSampler(VkDevice device, bool nearest) {
   VkSamplerCreateInfo info{};
   info.sType = VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO;
-  info.magFilter = VK_FILTER_LINEAR;
-  info.minFilter = VK_FILTER_LINEAR;
-  info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_LINEAR;  // trilinear: shrunk line art neither shimmers nor pops between levels
+  info.magFilter = info.minFilter = nearest ? VK_FILTER_NEAREST : VK_FILTER_LINEAR;
+  info.mipmapMode = nearest ? VK_SAMPLER_MIPMAP_MODE_NEAREST : VK_SAMPLER_MIPMAP_MODE_LINEAR;
   info.addressModeU = info.addressModeV = info.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
   info.maxLod = VK_LOD_CLAMP_NONE;
   VkSampler sampler = VK_NULL_HANDLE;
-  check(vkCreateSampler(device, &info, nullptr, &sampler), "creating the artwork sampler");
+  check(vkCreateSampler(device, &info, nullptr, &sampler),
+        nearest ? "creating the nearest-neighbour artwork sampler" : "creating the trilinear artwork sampler");
   return SamplerObject(device, sampler);
 }
 
@@ -114,7 +116,8 @@ ArtworkTexture uploadArtwork(const VulkanContext& context, VkCommandPool pool, c
     vkCmdCopyBufferToImage(cmd, staging.buffer.get(), out.image.image.get(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
     recordMipChain(cmd, out.image.image.get(), out.layerSize, spec.layers, spec.mipLevels);
   });
-  out.sampler = createSampler(context.device());
+  out.linear = createSampler(context.device(), false);
+  out.nearest = createSampler(context.device(), true);
   return out;
 }
 

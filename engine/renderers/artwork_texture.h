@@ -2,7 +2,8 @@
 // UNORM (blending happens in the drawings' own colour values, as in 2D paint programs). Layers
 // share the largest drawing's size; a smaller drawing sits in its layer's top-left corner with
 // transparent padding, so its UVs scale by drawing size / layer size. A full mip chain (linear
-// blits of the premultiplied texels) and trilinear filtering keep line art smooth when drawn smaller.
+// blits of the premultiplied texels) and trilinear filtering keep line art smooth when drawn smaller;
+// a second, nearest-neighbour sampler keeps magnified pixel art crisp (render::Sampling).
 #pragma once
 
 #include "core/png_image.h"
@@ -14,7 +15,8 @@ namespace ib::vk {
 
 struct ArtworkTexture {
   GpuImage image;           // layers = keys, every mip level in VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL
-  SamplerObject sampler;    // trilinear, clamped to the edge
+  SamplerObject linear;     // trilinear, clamped to the edge
+  SamplerObject nearest;    // nearest texel of the nearest mip level, clamped to the edge
   VkExtent2D layerSize{};   // pixels
 };
 

@@ -28,11 +28,13 @@ void viewTransform(const ViewBox& box, float out[4]) {
   out[3] = static_cast<float>(-1.0 - box.y0 * sy);
 }
 
-vk::DescriptorPoolObject createDescriptorPool(VkDevice device) {
-  const VkDescriptorPoolSize sizes[2] = {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1}, {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1}};
+// `sets` sets of the artwork layout: one combined image sampler and one storage buffer each.
+vk::DescriptorPoolObject createDescriptorPool(VkDevice device, uint32_t sets) {
+  const VkDescriptorPoolSize sizes[2] = {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, sets},
+                                         {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, sets}};
   VkDescriptorPoolCreateInfo info{};
   info.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO;
-  info.maxSets = 1;
+  info.maxSets = sets;
   info.poolSizeCount = 2;
   info.pPoolSizes = sizes;
   VkDescriptorPool pool = VK_NULL_HANDLE;
@@ -76,28 +78,35 @@ MeshRenderer::MeshRenderer(const vk::VulkanContext& context, VkCommandPool pool,
     for (int c : t) index.push_back(static_cast<uint32_t>(c));
   indices_ = vk::uploadBuffer(context, pool, index.data(), index.size() * sizeof(uint32_t), VK_BUFFER_USAGE_INDEX_BUFFER_BIT,
                               "the index buffer");
-  descriptorPool_ = createDescriptorPool(device);
+  // One set per sampler (Sampling), each with the artwork and the UVs.
+  descriptorPool_ = createDescriptorPool(device, kSamplings);
+  const VkDescriptorSetLayout layouts[kSamplings] = {pipelines_.setLayout.get(), pipelines_.setLayout.get()};
   VkDescriptorSetAllocateInfo allocate{};
   allocate.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO;
   allocate.descriptorPool = descriptorPool_.get();
-  allocate.descriptorSetCount = 1;
-  const VkDescriptorSetLayout layout = pipelines_.setLayout.get();
-  allocate.pSetLayouts = &layout;
-  vk::check(vkAllocateDescriptorSets(device, &allocate, &descriptorSet_), "allocating the artwork descriptor set");
-  VkDescriptorImageInfo image{artwork_.sampler.get(), artwork_.image.view.get(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
-  VkDescriptorBufferInfo buffer{uvs_.buffer.get(), 0, VK_WHOLE_SIZE};
-  VkWriteDescriptorSet writes[2] = {};
-  writes[0].sType = writes[1].sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
-  writes[0].dstSet = writes[1].dstSet = descriptorSet_;
-  writes[0].dstBinding = 0;
-  writes[0].descriptorCount = 1;
-  writes[0].descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-  writes[0].pImageInfo = &image;
-  writes[1].dstBinding = 1;
-  writes[1].descriptorCount = 1;
-  writes[1].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-  writes[1].pBufferInfo = &buffer;
-  vkUpdateDescriptorSets(device, 2, writes, 0, nullptr);
+  allocate.descriptorSetCount = kSamplings;
+  allocate.pSetLayouts = layouts;
+  vk::check(vkAllocateDescriptorSets(device, &allocate, descriptorSets_.data()), "allocating the artwork descriptor sets");
+  const VkSampler samplers[kSamplings] = {artwork_.linear.get(), artwork_.nearest.get()};  // [Sampling]
+  VkDescriptorImageInfo images[kSamplings];
+  const VkDescriptorBufferInfo buffer{uvs_.buffer.get(), 0, VK_WHOLE_SIZE};
+  VkWriteDescriptorSet writes[2 * kSamplings] = {};
+  for (int s = 0; s < kSamplings; ++s) {
+    images[s] = {samplers[s], artwork_.image.view.get(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    VkWriteDescriptorSet& image = writes[2 * s];
+    VkWriteDescriptorSet& uvs = writes[2 * s + 1];
+    image.sType = uvs.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
+    image.dstSet = uvs.dstSet = descriptorSets_[s];
+    image.dstBinding = 0;
+    image.descriptorCount = 1;
+    image.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+    image.pImageInfo = &images[s];
+    uvs.dstBinding = 1;
+    uvs.descriptorCount = 1;
+    uvs.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    uvs.pBufferInfo = &buffer;
+  }
+  vkUpdateDescriptorSets(device, 2 * kSamplings, writes, 0, nullptr);
   // Per slot: every onion skin's and the frame's positions, then the largest overlay.
   size_t cohesive = 0;
   for (const auto& c : cohesiveEdges_) cohesive += c.size();
@@ -152,7 +161,6 @@ void MeshRenderer::drawArtwork(VkCommandBuffer cmd, const float view[4], double 
   push.activeCount = active.count;
   push.keyCount = keyCount_;
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.artwork[vk::artworkVariant(active.count)].get());
-  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.artworkLayout.get(), 0, 1, &descriptorSet_, 0, nullptr);
   vkCmdPushConstants(cmd, pipelines_.artworkLayout.get(), VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
                      sizeof push, &push);
   const VkBuffer buffer = streams_[slot].buffer.get();
@@ -214,6 +222,9 @@ void MeshRenderer::record(VkCommandBuffer cmd, int slot, VkExtent2D extent, cons
   // Target pixels per drawing pixel (the larger of x's and y's when the view stretches one).
   const double pixelsPerUnit = std::max(extent.width / (frame.view.x1 - frame.view.x0),
                                         extent.height / (frame.view.y1 - frame.view.y0));
+  // The frame's sampler, for its onion skins and itself (the overlay pipelines use no sets).
+  const VkDescriptorSet set = descriptorSets_[frame.sampling == Sampling::kNearest ? 1 : 0];
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.artworkLayout.get(), 0, 1, &set, 0, nullptr);
   VkDeviceSize offset = 0;
   for (const OnionSkin& skin : frame.onion) {
     if (!skin.positions) throw std::invalid_argument("render: an onion skin has no positions");

@@ -3,7 +3,8 @@
 // createColorRenderPass. Heavy setup once (artwork upload, UVs, indices, pipelines); per frame only
 // positions (welded along glued cuts, with each vertex's closure: weldCuts) and overlay vertices
 // are written, into the stream buffer of the frame's slot, so the GPU keeps drawing earlier slots
-// meanwhile (libigl's precompute-then-solve, for pixels).
+// meanwhile (libigl's precompute-then-solve, for pixels). The frame's sampling picks one of two
+// descriptor sets made up front, one per sampler.
 #pragma once
 
 #include "gpu/gpu_resources.h"
@@ -11,6 +12,7 @@
 #include "renderers/artwork_texture.h"
 #include "renderers/renderer_pipelines.h"
 
+#include <array>
 #include <vector>
 
 namespace ib::render {
@@ -58,7 +60,8 @@ class MeshRenderer {
   vk::GpuBuffer uvs_;
   vk::GpuBuffer indices_;
   vk::DescriptorPoolObject descriptorPool_;
-  VkDescriptorSet descriptorSet_ = VK_NULL_HANDLE;  // freed with its pool
+  static constexpr int kSamplings = 2;                 // render::Sampling's values
+  std::array<VkDescriptorSet, kSamplings> descriptorSets_{};  // [Sampling]: artwork and UVs; freed with the pool
   std::vector<vk::GpuBuffer> streams_;              // [slot]: positions, then overlay vertices
 };
 
