@@ -15,6 +15,13 @@
 
 namespace {
 
+// The engine's commands are listed only when this build has them (INBETWEEN_ENGINE).
+#ifdef INBETWEEN_WITH_ENGINE
+#define ENGINE_COMMAND(line) line
+#else
+#define ENGINE_COMMAND(line) ""
+#endif
+
 constexpr const char* kUsage =
     "usage: inbetween COMMAND [OPTIONS]\n"
     "\n"
@@ -22,13 +29,13 @@ constexpr const char* kUsage =
     "\n"
     "commands:\n"
     "  mesh SCENE     build and optimize the multimesh of a scene (see `inbetween mesh --help`)\n"
-    "  render SCENE   render the scene's animation to PNG frames, headless (see `inbetween render --help`)\n"
-    "  play SCENE     play the scene in a window with every parameter as a slider (see `inbetween play --help`)\n"
+    ENGINE_COMMAND("  render SCENE   render the scene's animation to PNG frames, headless (see `inbetween render --help`)\n")
+    ENGINE_COMMAND("  play SCENE     play the scene in a window with every parameter as a slider (see `inbetween play --help`)\n")
     "  bench interp   benchmark the interpolation solver; one JSON object per case\n"
     "  bench comesh   benchmark Comesh Optimization; one JSON object per case\n"
     "  bench anim     benchmark playing every bundled scene's timeline; one JSON object per case\n"
-    "  bench render   benchmark headless rendering (frames per second); one JSON object per case\n"
-    "  bench play     benchmark the player's window (fps, frame times, parameter latency); needs a display\n"
+    ENGINE_COMMAND("  bench render   benchmark headless rendering (frames per second); one JSON object per case\n")
+    ENGINE_COMMAND("  bench play     benchmark the player's window (fps, frame times, parameter latency); needs a display\n")
     "  bench cut      benchmark the solver through a cut letting go; one JSON object per case\n"
     "\n"
     "options:\n"
