@@ -13,13 +13,6 @@ using namespace ib;
 
 namespace {
 
-SolverOptions tight() {
-  SolverOptions o;
-  o.relativeTolerance = 1e-10;
-  o.maxIterations = 3000;
-  return o;
-}
-
 Eigen::VectorXd unit(int m, int i) {
   Eigen::VectorXd w = Eigen::VectorXd::Zero(m);
   w(i) = 1;
@@ -43,7 +36,7 @@ double relativeAngle(const Eigen::MatrixX2d& x, const Eigen::MatrixX2d& y) {
 TEST_CASE("interpolation: w = e_i reproduces key i where it was drawn, on every fixture") {
   for (const auto& f : ib::test::allFixtures()) {
     const int m = f.mesh.keyCount();
-    Interpolator solver(f.mesh, {}, tight());
+    Interpolator solver(f.mesh, {}, ib::test::tightSolverOptions());
     for (int i = 0; i < m; ++i) {
       INFO(f.name << ", key " << i);
       // Start far away: from the next key's drawing, so the solve has real work to do.
@@ -65,7 +58,7 @@ TEST_CASE("interpolation: keys related by a rigid motion give rigid inbetweens b
   const Eigen::MatrixX2d X1 = (X0 * R.transpose()).rowwise() + shift;
   Multimesh mesh = f.mesh;
   mesh.addKey(X1, {}, mesh.boundaryVertices(0));
-  Interpolator solver(mesh, {}, tight());
+  Interpolator solver(mesh, {}, ib::test::tightSolverOptions());
   InterpolationResult previous = solver.solve(unit(2, 0));
   double previousAngle = 0;
   for (double s = 0.1; s < 0.95; s += 0.1) {
@@ -128,7 +121,7 @@ TEST_CASE("interpolation: stiffer triangles deform less") {
   }
   const Eigen::Vector2d w(0.5, 0.5);
   const auto measure = [&](const Multimesh& mesh, const std::vector<int>& which) {
-    const Eigen::MatrixX2d x = Interpolator(mesh, {}, tight()).solve(w).x;
+    const Eigen::MatrixX2d x = Interpolator(mesh, {}, ib::test::tightSolverOptions()).solve(w).x;
     double total = 0;
     for (int k : which) total += ::test::arapDistortion(mesh, x, w, k);
     return total / which.size();
@@ -207,8 +200,8 @@ TEST_CASE("interpolation: out-of-range parameters name the parameter") {
 TEST_CASE("interpolation: keys with zero weight do not change the inbetween") {
   // The 4-key strip's first two keys are the 2-key strip.
   const auto two = ib::test::strip(400, 2), four = ib::test::strip(400, 4);
-  const InterpolationResult a = Interpolator(two.mesh, {}, tight()).solve(Eigen::Vector2d(0.3, 0.7));
-  const InterpolationResult b = Interpolator(four.mesh, {}, tight()).solve(Eigen::Vector4d(0.3, 0.7, 0, 0));
+  const InterpolationResult a = Interpolator(two.mesh, {}, ib::test::tightSolverOptions()).solve(Eigen::Vector2d(0.3, 0.7));
+  const InterpolationResult b = Interpolator(four.mesh, {}, ib::test::tightSolverOptions()).solve(Eigen::Vector4d(0.3, 0.7, 0, 0));
   // Only the weak placement tie sees the extra keys (through the shape size that normalizes it).
   REQUIRE((a.x - b.x).cwiseAbs().maxCoeff() < 1e-4 * two.size);
 }
@@ -217,7 +210,7 @@ TEST_CASE("interpolation: on a mesh large enough for several threads, 2 threads 
   // Over 4000 vertices, so the solver really splits the work (smaller meshes run on one thread).
   const auto f = ib::test::strip(6000, 2);
   REQUIRE(f.mesh.vertexCount() >= 4000);
-  SolverOptions one = tight(), two = tight();
+  SolverOptions one = ib::test::tightSolverOptions(), two = ib::test::tightSolverOptions();
   one.threads = 1;
   two.threads = 2;
   Interpolator single(f.mesh, {}, one), split(f.mesh, {}, two);

@@ -19,13 +19,6 @@ using namespace ib;
 
 namespace {
 
-SolverOptions tight() {
-  SolverOptions o;
-  o.relativeTolerance = 1e-10;
-  o.maxIterations = 3000;
-  return o;
-}
-
 double largestDistance(const Eigen::MatrixX2d& a, const Eigen::MatrixX2d& b) {
   return (a - b).rowwise().norm().maxCoeff();
 }
@@ -71,12 +64,12 @@ DynamicScene squareArchStretch() {
 TEST_CASE("live solver: after setParameters a solve gives a fresh Interpolator's inbetween, in the same factor pattern") {
   const auto f = test::gluedSquares(9, 1.0, 0.3);
   const Eigen::Vector2d w(0.4, 0.6);
-  Interpolator live(f.mesh, {}, tight());
+  Interpolator live(f.mesh, {}, ib::test::tightSolverOptions());
   live.solve(w);  // history and a factor of the old parameters, to be forgotten
   const long nonZeros = live.factorNonZeros();
   live.setParameters(changedParams());
   const InterpolationResult changed = live.solve(w);
-  const InterpolationResult fresh = Interpolator(f.mesh, changedParams(), tight()).solve(w);
+  const InterpolationResult fresh = Interpolator(f.mesh, changedParams(), ib::test::tightSolverOptions()).solve(w);
   REQUIRE(changed.converged);
   CHECK(largestDistance(changed.x, fresh.x) < 1e-6 * f.size);
   CHECK(largestDistance(changed.x, fresh.x) == 0);  // bit for bit, as interpolator.h says
@@ -84,7 +77,7 @@ TEST_CASE("live solver: after setParameters a solve gives a fresh Interpolator's
   // And back: W_O off again, the defaults' inbetween.
   live.setParameters({});
   const InterpolationResult back = live.solve(w);
-  CHECK(largestDistance(back.x, Interpolator(f.mesh, {}, tight()).solve(w).x) < 1e-6 * f.size);
+  CHECK(largestDistance(back.x, Interpolator(f.mesh, {}, ib::test::tightSolverOptions()).solve(w).x) < 1e-6 * f.size);
   CHECK(live.factorNonZeros() == nonZeros);
 }
 
@@ -93,13 +86,13 @@ TEST_CASE("live solver: after setStiffness a solve gives the inbetween of a fres
     INFO(f.name);
     const Eigen::Vector2d w(0.5, 0.5);
     const Eigen::VectorXd kappa = randomStiffness(f.mesh.triangleCount());
-    Interpolator live(f.mesh, {}, tight());
+    Interpolator live(f.mesh, {}, ib::test::tightSolverOptions());
     const double scale = live.stiffnessScale();
     live.solve(w);
     const long nonZeros = live.factorNonZeros();
     live.setStiffness(kappa);
     const InterpolationResult changed = live.solve(w);
-    Interpolator fresh(withStiffness(f.mesh, kappa), {}, tight());
+    Interpolator fresh(withStiffness(f.mesh, kappa), {}, ib::test::tightSolverOptions());
     REQUIRE(changed.converged);
     const InterpolationResult expected = fresh.solve(w);
     CHECK(largestDistance(changed.x, expected.x) < 1e-6 * f.size);
@@ -113,7 +106,7 @@ TEST_CASE("live solver: after setStiffness a solve gives the inbetween of a fres
 TEST_CASE("live solver: bad live values name what is wrong and change nothing") {
   const auto f = test::gluedSquares(7, 1.0, 0.3);
   const Eigen::Vector2d w(0.3, 0.7);
-  Interpolator live(f.mesh, {}, tight());
+  Interpolator live(f.mesh, {}, ib::test::tightSolverOptions());
   InterpolationParams bad;
   bad.cohesive.alpha = 1.5;
   REQUIRE_THROWS_WITH(live.setParameters(bad), Catch::Contains("alpha"));
@@ -126,7 +119,7 @@ TEST_CASE("live solver: bad live values name what is wrong and change nothing") 
   REQUIRE_THROWS_WITH(live.setStiffness(kappa), Catch::Contains("kappa[5]"));
   kappa(5) = std::numeric_limits<double>::quiet_NaN();
   REQUIRE_THROWS_AS(live.setStiffness(kappa), InputError);
-  CHECK(largestDistance(live.solve(w).x, Interpolator(f.mesh, {}, tight()).solve(w).x) < 1e-6 * f.size);
+  CHECK(largestDistance(live.solve(w).x, Interpolator(f.mesh, {}, ib::test::tightSolverOptions()).solve(w).x) < 1e-6 * f.size);
 }
 
 TEST_CASE("live solver: a cancel flag set from another thread stops a long solve within a second, at a finite iterate") {
@@ -197,8 +190,8 @@ TEST_CASE("frame stream: a parameter change takes effect from the next frame, an
   const auto f = test::gluedSquares(9, 1.0, 0.3);
   const Timeline timeline = defaultTimeline({"glued", "apart"});
   const InterpolationParams changed = changedParams();
-  FrameStream live(f.mesh, timeline, {}, tight(), {});
-  FrameStream reference(f.mesh, timeline, changed, tight(), {});
+  FrameStream live(f.mesh, timeline, {}, ib::test::tightSolverOptions(), {});
+  FrameStream reference(f.mesh, timeline, changed, ib::test::tightSolverOptions(), {});
   for (int k = 0; k < 5; ++k) reference.next(), live.next();
   live.setParameters(changed, {});
   REQUIRE(live.nextFrame() == 5);

@@ -4,6 +4,13 @@
 
 namespace ib::test {
 
+SolverOptions tightSolverOptions() {
+  SolverOptions o;
+  o.relativeTolerance = 1e-10;
+  o.maxIterations = 3000;
+  return o;
+}
+
 Fixture strip(int vertices, int keys) {
   Multimesh mesh = benchmarkStrip(vertices, keys);
   const double size = boundingDiagonal(mesh.keyPositions(0));

@@ -1,6 +1,7 @@
 // Multimeshes built in code for the tests, each with a documented shape.
 #pragma once
 
+#include "interpolation/interpolator.h"
 #include "multimesh/multimesh.h"
 #include "testkit/shape_generators.h"
 
@@ -29,6 +30,9 @@ std::vector<Fixture> allFixtures();
 // Vertices of the glued squares' seam, left side and right side, bottom to top.
 std::vector<int> seamLeft(int n);
 std::vector<int> seamRight(int n);
+
+// Solver options that solve to the minimizer: relative tolerance 1e-10, at most 3000 iterations.
+SolverOptions tightSolverOptions();
 
 // Largest distance between corresponding seam vertices.
 double seamGap(const Eigen::MatrixX2d& x, int n);
