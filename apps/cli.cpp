@@ -3,6 +3,8 @@
 #include "core/error.h"
 
 #include <algorithm>
+#include <cctype>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <sstream>
@@ -92,6 +94,39 @@ std::vector<int> integerList(const std::string& text, const std::string& option,
   }
   if (out.empty()) throw InputError("--" + option + " is empty");
   return out;
+}
+
+namespace {
+
+int wholeNumber(const std::string& text, const std::string& option) {
+  if (text.empty() || text.size() > 9 ||
+      !std::all_of(text.begin(), text.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); }))
+    throw InputError(option + ": '" + text + "' is not a whole number");
+  return std::atoi(text.c_str());
+}
+
+}  // namespace
+
+std::array<int, 2> frameRange(const std::string& text, const std::string& option) {
+  const size_t colon = text.find(':');
+  if (colon == std::string::npos) {
+    const int f = wholeNumber(text, option);
+    return {f, f};
+  }
+  const std::array<int, 2> range{wholeNumber(text.substr(0, colon), option), wholeNumber(text.substr(colon + 1), option)};
+  if (range[0] > range[1]) throw InputError(option + ": '" + text + "' ends before it starts");
+  return range;
+}
+
+double positiveNumber(const std::string& text, const std::string& option, double max, const std::string& what) {
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end != '\0' || !std::isfinite(value) || value <= 0 || value > max) {
+    std::ostringstream range;
+    range << max;
+    throw InputError(option + ": '" + text + "' is not " + what + " in (0, " + range.str() + "]");
+  }
+  return value;
 }
 
 }  // namespace ib::cli

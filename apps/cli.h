@@ -1,6 +1,7 @@
 // Command-line argument helpers shared by the subcommands. Errors are InputErrors (exit 2).
 #pragma once
 
+#include <array>
 #include <map>
 #include <string>
 #include <vector>
@@ -37,5 +38,12 @@ bool printHelpIfAsked(const std::vector<std::string>& args, const char* usage);
 // A comma-separated list of integers, each optionally with a k suffix (x 1000) and in [min, max],
 // for option --`option` (named in the error).
 std::vector<int> integerList(const std::string& text, const std::string& option, int min, int max);
+
+// "A:B" (inclusive, A <= B) or "A", both whole numbers >= 0, for option `option` (named in errors).
+std::array<int, 2> frameRange(const std::string& text, const std::string& option);
+
+// A finite number in (0, max], for option `option` (named in errors, with `what` it is, e.g.
+// "a frame rate").
+double positiveNumber(const std::string& text, const std::string& option, double max, const std::string& what);
 
 }  // namespace ib::cli

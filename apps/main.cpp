@@ -1,6 +1,7 @@
 // The `inbetween` command: a thin front end over the solver and the engine.
 // Exit codes: 0 success, 2 bad input (message names the file, field or option), 1 internal error.
 #include "bench/bench.h"
+#include "commands/export_command.h"
 #include "commands/mesh_command.h"
 #ifdef INBETWEEN_WITH_ENGINE
 #include "commands/play_command.h"
@@ -29,6 +30,7 @@ constexpr const char* kUsage =
     "\n"
     "commands:\n"
     "  mesh SCENE     build and optimize the multimesh of a scene (see `inbetween mesh --help`)\n"
+    "  export SCENE   export the scene's animation as glTF 2.0 (.glb / .gltf) (see `inbetween export --help`)\n"
     ENGINE_COMMAND("  render SCENE   render the scene's animation to PNG frames, headless (see `inbetween render --help`)\n")
     ENGINE_COMMAND("  play SCENE     play the scene in a window with every parameter as a slider (see `inbetween play --help`)\n")
     "  bench interp   benchmark the interpolation solver; one JSON object per case\n"
@@ -54,6 +56,7 @@ int run(const std::vector<std::string>& args) {
   const std::vector<std::string> rest(args.begin() + 1, args.end());
   if (command == "bench") return ib::runBench(rest);
   if (command == "mesh") return ib::runMesh(rest);
+  if (command == "export") return ib::runExport(rest);
 #ifdef INBETWEEN_WITH_ENGINE
   if (command == "render") return ib::runRender(rest);
   if (command == "play") return ib::runPlay(rest);

@@ -38,18 +38,6 @@ std::array<int, 2> parseSize(const std::string& text, const std::string& option)
   return {parseCount(text.substr(0, x), option, 1, 16384), parseCount(text.substr(x + 1), option, 1, 16384)};
 }
 
-std::array<int, 2> parseFrameRange(const std::string& text, const std::string& option) {
-  const size_t colon = text.find(':');
-  if (colon == std::string::npos) {
-    const int f = parseCount(text, option, 0, 100000000);
-    return {f, f};
-  }
-  const std::array<int, 2> range{parseCount(text.substr(0, colon), option, 0, 100000000),
-                                 parseCount(text.substr(colon + 1), option, 0, 100000000)};
-  if (range[0] > range[1]) throw InputError(option + ": '" + text + "' ends before it starts");
-  return range;
-}
-
 std::array<float, 4> parseBackground(const std::string& text, const std::string& option) {
   if (text == "transparent") return {0, 0, 0, 0};
   const std::string hex = !text.empty() && text[0] == '#' ? text.substr(1) : text;
@@ -65,16 +53,9 @@ RenderOptions parseRenderOptions(const cli::Arguments& a) {
   RenderOptions o;
   if (!a.has("output")) throw InputError("render: needs -o DIR, the folder for the frames");
   o.output = a.value("output", "");
-  if (a.has("frames")) o.frames = parseFrameRange(a.value("frames", ""), "--frames");
+  if (a.has("frames")) o.frames = cli::frameRange(a.value("frames", ""), "--frames");
   if (a.has("size")) o.size = parseSize(a.value("size", ""), "--size");
-  if (a.has("fps")) {
-    const std::string text = a.value("fps", "");
-    char* end = nullptr;
-    const double fps = std::strtod(text.c_str(), &end);
-    if (text.empty() || *end != '\0' || !std::isfinite(fps) || fps <= 0 || fps > 1000)
-      throw InputError("--fps: '" + text + "' is not a frame rate in (0, 1000]");
-    o.fps = fps;
-  }
+  if (a.has("fps")) o.fps = cli::positiveNumber(a.value("fps", ""), "--fps", 1000, "a frame rate");
   o.target.samples = a.integer("samples", 4, 1, 64);
   o.target.background = parseBackground(a.value("background", "transparent"), "--background");
   o.overlays.wireframe = a.flag("wireframe");

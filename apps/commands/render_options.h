@@ -38,8 +38,6 @@ vk::VulkanContext openVulkan(const vk::ContextOptions& options, const std::strin
 
 // "WxH" with both in [1, 16384]; `option` names it in errors.
 std::array<int, 2> parseSize(const std::string& text, const std::string& option);
-// "A:B" (inclusive, A <= B) or "A", both >= 0.
-std::array<int, 2> parseFrameRange(const std::string& text, const std::string& option);
 // "transparent" or a colour "RRGGBB" / "#RRGGBB" / "RRGGBBAA": straight RGBA in [0, 1].
 std::array<float, 4> parseBackground(const std::string& text, const std::string& option);
 

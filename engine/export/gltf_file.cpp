@@ -1,0 +1,97 @@
+#include "export/gltf_file.h"
+
+#include "core/atomic_file.h"
+#include "core/error.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cctype>
+#include <cstdint>
+#include <filesystem>
+#include <sstream>
+
+namespace ib::gltf {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// The document's JSON: tinygltf's serialization of everything but the buffers, with the buffers
+// added and channels that target a pointer rather than a node left without "node".
+std::string documentJson(const GltfDocument& doc, const std::string& binUri) {
+  tinygltf::TinyGLTF writer;
+  std::ostringstream stream;
+  if (!writer.WriteGltfSceneToStream(&doc.model, stream, false, false))
+    throw std::runtime_error("glTF export: tinygltf could not serialize the document");
+  nlohmann::json json = nlohmann::json::parse(stream.str());
+  nlohmann::json buffers = nlohmann::json::array();
+  nlohmann::json main = {{"byteLength", doc.bin.size()}};
+  if (!binUri.empty()) main["uri"] = binUri;
+  buffers.push_back(main);
+  if (doc.fallbackBytes)
+    buffers.push_back({{"byteLength", doc.fallbackBytes}, {"extensions", {{"EXT_meshopt_compression", {{"fallback", true}}}}}});
+  json["buffers"] = buffers;
+  if (json.contains("animations"))
+    for (nlohmann::json& animation : json["animations"])
+      for (nlohmann::json& channel : animation["channels"])
+        if (channel["target"].value("node", 0) < 0) channel["target"].erase("node");
+  return json.dump();
+}
+
+void appendU32(std::string& out, uint32_t v) {
+  for (int b = 0; b < 4; ++b) out.push_back(static_cast<char>((v >> (8 * b)) & 0xff));
+}
+
+std::string glbBytes(const GltfDocument& doc) {
+  std::string json = documentJson(doc, "");
+  while (json.size() % 4) json.push_back(' ');
+  std::string bin(doc.bin.begin(), doc.bin.end());
+  while (bin.size() % 4) bin.push_back('\0');
+  std::string out;
+  appendU32(out, 0x46546C67);  // "glTF"
+  appendU32(out, 2);
+  appendU32(out, static_cast<uint32_t>(12 + 8 + json.size() + 8 + bin.size()));
+  appendU32(out, static_cast<uint32_t>(json.size()));
+  appendU32(out, 0x4E4F534A);  // "JSON"
+  out += json;
+  appendU32(out, static_cast<uint32_t>(bin.size()));
+  appendU32(out, 0x004E4942);  // "BIN\0"
+  out += bin;
+  return out;
+}
+
+}  // namespace
+
+Container containerOf(const std::string& path, const std::string& field) {
+  std::string ext = fs::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (ext == ".glb") return Container::kGlb;
+  if (ext == ".gltf") return Container::kGltf;
+  throw InputError(field + " " + inQuotes(path) + ": name the file .glb (binary glTF) or .gltf (JSON with a .bin beside it)");
+}
+
+size_t documentBytes(const GltfDocument& doc, Container container, const std::string& binName) {
+  if (container == Container::kGlb) return glbBytes(doc).size();
+  return documentJson(doc, binName).size() + doc.bin.size();
+}
+
+void writeDocument(const GltfDocument& doc, const std::string& path) {
+  if (containerOf(path, "-o") == Container::kGlb) {
+    writeFileAtomically(path, glbBytes(doc));
+    return;
+  }
+  const fs::path gltf(path);
+  const fs::path bin = fs::path(gltf).replace_extension(".bin");
+  const bool hadBin = fs::exists(bin);
+  writeFileAtomically(bin.string(), std::string(doc.bin.begin(), doc.bin.end()));
+  try {
+    writeFileAtomically(path, documentJson(doc, bin.filename().string()));
+  } catch (...) {
+    std::error_code ignored;
+    if (!hadBin) fs::remove(bin, ignored);
+    throw;
+  }
+}
+
+}  // namespace ib::gltf
