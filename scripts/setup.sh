@@ -2,7 +2,9 @@
 # Installs every Debian package inbetween needs, then configures and builds (Release).
 # Idempotent: safe to run twice. Usage: scripts/setup.sh [BUILD_DIR]   (default: build)
 # INBETWEEN_WERROR=ON in the environment makes compiler warnings errors (.ci/run sets it);
-# INBETWEEN_ENGINE=OFF installs and builds the solver alone (no Vulkan, GLFW, ImGui or Xvfb).
+# INBETWEEN_ENGINE=OFF installs and builds the solver alone (no Vulkan, GLFW, ImGui, Xvfb or Chromium).
+# Both install the npm packages of the export's client checks (tests/clients, pinned by its
+# package-lock.json) into tests/clients/node_modules.
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 build=${1:-"$here/build"}
@@ -17,8 +19,10 @@ engine_packages=(
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers glslang-tools
   libglfw3-dev libglm-dev libimgui-dev
   xvfb xauth
+  chromium
 )
 [ "${INBETWEEN_ENGINE:-ON}" = "OFF" ] || packages+=("${engine_packages[@]}")
+command -v npm >/dev/null || packages+=(nodejs npm)  # any Node.js with npm will do
 
 missing=()
 for p in "${packages[@]}"; do
@@ -30,6 +34,14 @@ if [ ${#missing[@]} -gt 0 ]; then
   echo "setup: installing ${missing[*]}"
   $sudo_cmd apt-get update -qq
   DEBIAN_FRONTEND=noninteractive $sudo_cmd apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+
+# The client checks' npm packages, again whenever package-lock.json is newer than node_modules.
+clients="$here/tests/clients"
+if [ ! -d "$clients/node_modules" ] || [ "$clients/package-lock.json" -nt "$clients/node_modules" ]; then
+  echo "setup: npm ci in tests/clients"
+  (cd "$clients" && npm ci --no-audit --no-fund)
+  touch "$clients/node_modules"
 fi
 
 options=(-DCMAKE_BUILD_TYPE=Release)

@@ -1,0 +1,147 @@
+// node browser_vs_render.mjs FILE.glb RENDER_DIR --frames F1,F2,... [--side-by-side OUT.png] [--break WHAT]
+// Headless Chromium (Debian's, software WebGL through ANGLE on SwiftShader) draws an exported file
+// with three.js's WebGLRenderer (antialias, transparent clear, an OrthographicCamera covering exactly
+// the canvas, the KHR_animation_pointer plugin so the artwork cross-fades) at the times of the
+// given frames; RENDER_DIR holds `inbetween render`'s frames of the same scene and multimesh
+// (frame_NNNN.png, straight alpha). Both premultiplied, per frame:
+//   alpha:  |a - a'| over the pixels either picture covers (alpha > 0): mean and 99th percentile
+//   colour: the largest channel's |c - c'| over the pixels both cover more than half: mean, 99th
+// (in units of 1 = 255). Fails when any figure exceeds its tolerance (TOLERANCE below, docs/export.md).
+// --side-by-side writes the first frame between the keys as three.js | inbetween render, over grey.
+// --break flip|shift|no-crossfade draws wrongly on purpose (y-flipped camera, camera 2 px off, no
+// pointer plugin) to see the check fail.
+import fs from 'node:fs';
+import http from 'node:http';
+import os from 'node:os';
+import path from 'node:path';
+import { fail, here, need, usage, inbetweenExtras } from './common.mjs';
+import { readPng, writePng } from './png.mjs';
+
+// Measured on the bundled scenes recoloured (recolour_scene.mjs), see docs/export.md.
+export const TOLERANCE = { alphaMean: 0.01, alphaP99: 0.25, colourMean: 0.01, colourP99: 0.05 };
+
+const args = process.argv.slice(2);
+const option = (name) => {
+  const at = args.indexOf(name);
+  return at >= 0 ? args.splice(at, 2)[1] : undefined;
+};
+const framesText = option('--frames'), sideBySide = option('--side-by-side'), breakWhat = option('--break');
+usage('node browser_vs_render.mjs FILE.glb RENDER_DIR --frames F1,F2,... [--side-by-side OUT.png] [--break flip|shift|no-crossfade]',
+      args.length === 2 && framesText && (!breakWhat || ['flip', 'shift', 'no-crossfade'].includes(breakWhat)));
+const [file, renderDir] = args;
+const frames = framesText.split(',').map(Number);
+if (!fs.existsSync(file)) fail(`${file} does not exist`);
+const extras = inbetweenExtras(file);
+const [A, B] = extras.frames;
+for (const f of frames) if (!(Number.isInteger(f) && f >= A && f <= B)) fail(`--frames: ${f} is not a frame of ${file} (${A}..${B})`);
+const rendered = frames.map((f) => {
+  const png = path.join(renderDir, `frame_${String(f).padStart(4, '0')}.png`);
+  if (!fs.existsSync(png)) fail(`${png} does not exist (inbetween render's frame ${f})`);
+  return readPng(png);
+});
+const { chromium } = await need('playwright-core');
+
+// The page and node_modules from tests/clients, the file (and anything beside it) under /model/.
+const modelDir = path.dirname(path.resolve(file));
+const types = { '.html': 'text/html', '.js': 'text/javascript', '.mjs': 'text/javascript', '.json': 'application/json',
+                '.glb': 'model/gltf-binary', '.gltf': 'model/gltf+json', '.wasm': 'application/wasm', '.png': 'image/png' };
+const server = http.createServer((request, response) => {
+  const url = decodeURIComponent(new URL(request.url, 'http://localhost').pathname);
+  const [root, rest] = url.startsWith('/model/') ? [modelDir, url.slice(7)] : [here, url.slice(1)];
+  const target = path.resolve(root, rest);
+  if (!target.startsWith(root + path.sep) || !fs.existsSync(target) || !fs.statSync(target).isFile()) {
+    response.writeHead(404).end();
+    return;
+  }
+  response.writeHead(200, { 'content-type': types[path.extname(target)] ?? 'application/octet-stream' });
+  fs.createReadStream(target).pipe(response);
+});
+await new Promise((resolve) => server.listen(0, '127.0.0.1', resolve));
+const origin = `http://127.0.0.1:${server.address().port}`;
+
+const executablePath = process.env.INBETWEEN_CHROMIUM ?? ['/usr/lib/chromium/chromium', '/usr/bin/chromium'].find((p) => fs.existsSync(p));
+if (!executablePath) fail('no Chromium: install Debian\'s chromium (scripts/setup.sh) or set INBETWEEN_CHROMIUM');
+const profile = fs.mkdtempSync(path.join(os.tmpdir(), 'inbetween-chromium-'));
+let result, context;
+const problems = [];
+try {
+  context = await chromium.launchPersistentContext(profile, {
+    executablePath, headless: true,
+    args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run', '--disable-background-networking',
+           '--disable-component-update', '--disable-sync', '--use-angle=swiftshader', '--enable-unsafe-swiftshader'],
+  });
+  const page = await context.newPage();
+  page.on('pageerror', (e) => problems.push(`page error: ${e.message}`));
+  // (ANGLE's "GPU stall due to ReadPixels" performance note is expected: we read every picture back.)
+  page.on('console', (m) => {
+    if ((m.type() === 'error' || m.type() === 'warning') && !/GPU stall due to ReadPixels/.test(m.text())) problems.push(`console ${m.type()}: ${m.text()}`);
+  });
+  page.on('response', (r) => { if (r.status() >= 400 && !r.url().endsWith('/favicon.ico')) problems.push(`HTTP ${r.status()} for ${r.url()}`); });
+  page.on('requestfailed', (r) => problems.push(`request failed: ${r.url()}`));
+  await page.goto(`${origin}/page.html`);
+  await page.waitForFunction(() => window.pageReady === true, null, { timeout: 30000 });
+  const times = frames.map((f) => (f - A) / extras.fps);
+  result = await page.evaluate(([url, times, options]) => window.renderTimes(url, times, options),
+    [`/model/${encodeURIComponent(path.basename(file))}`, times,
+     { pointer: breakWhat !== 'no-crossfade', flipY: breakWhat === 'flip', shiftPx: breakWhat === 'shift' ? 2 : 0 }]);
+} catch (e) {
+  problems.push(e.message.split('\n')[0]);
+} finally {
+  await context?.close();
+  server.close();
+  fs.rmSync(profile, { recursive: true, force: true });
+}
+if (!result) fail(`Chromium did not draw ${file}: ${problems.join('; ')}`);
+for (const p of problems) console.log(`  (browser) ${p}`);
+
+const percentile = (values, q) => {
+  if (values.length === 0) return 0;
+  const sorted = Float64Array.from(values).sort();
+  return sorted[Math.min(sorted.length - 1, Math.floor(q * sorted.length))];
+};
+const mean = (values) => values.length ? values.reduce((a, b) => a + b, 0) / values.length : 0;
+let failed = [];
+const pictures = result.pictures.map((b64) => new Uint8Array(Buffer.from(b64, 'base64')));
+console.log(`${file}: three.js ${result.width}x${result.height} on ${result.renderer}${breakWhat ? `, broken on purpose: ${breakWhat}` : ''}`);
+frames.forEach((f, j) => {
+  const three = pictures[j], render = rendered[j];
+  if (render.width !== result.width || render.height !== result.height)
+    fail(`frame ${f}: inbetween render drew ${render.width}x${render.height}, the canvas is ${result.width}x${result.height}`);
+  const alpha = [], colour = [];
+  for (let i = 0; i < render.width * render.height; ++i) {
+    const a = three[4 * i + 3] / 255, b = render.data[4 * i + 3] / 255;
+    if (a > 0 || b > 0) alpha.push(Math.abs(a - b));
+    if (a > 0.5 && b > 0.5) {
+      let d = 0;
+      for (let c = 0; c < 3; ++c) d = Math.max(d, Math.abs(three[4 * i + c] / 255 - render.data[4 * i + c] / 255 * b));
+      colour.push(d);
+    }
+  }
+  const figures = { alphaMean: mean(alpha), alphaP99: percentile(alpha, 0.99), colourMean: mean(colour), colourP99: percentile(colour, 0.99) };
+  const over = Object.keys(TOLERANCE).filter((k) => !(figures[k] <= TOLERANCE[k]));
+  console.log(`  frame ${f} (t = ${((f - A) / extras.fps).toFixed(4)} s): alpha mean ${figures.alphaMean.toFixed(4)} p99 ${figures.alphaP99.toFixed(4)}` +
+              ` over ${alpha.length} px; colour mean ${figures.colourMean.toFixed(4)} p99 ${figures.colourP99.toFixed(4)} over ${colour.length} px` +
+              (over.length ? `  <- over the tolerance: ${over.join(', ')}` : ''));
+  if (over.length) failed.push(`frame ${f}: ${over.map((k) => `${k} ${figures[k].toFixed(4)} > ${TOLERANCE[k]}`).join(', ')}`);
+});
+
+if (sideBySide) {
+  const j = Math.max(0, frames.findIndex((f, i) => i > 0 && f !== A));
+  const { width: W, height: H } = rendered[j], gap = 4;
+  const out = { width: 2 * W + gap, height: H, data: new Uint8Array((2 * W + gap) * H * 4) };
+  const grey = 200;
+  for (let y = 0; y < H; ++y) for (let x = 0; x < out.width; ++x) {
+    const o = 4 * (y * out.width + x);
+    let rgb = [grey, grey, grey];
+    if (x < W || x >= W + gap) {
+      const side = x < W ? 0 : 1, i = 4 * (y * W + (side ? x - W - gap : x));
+      const src = side ? rendered[j].data : pictures[j];
+      const a = src[i + 3] / 255;
+      rgb = [0, 1, 2].map((c) => Math.round((side ? src[i + c] * a : src[i + c]) + grey * (1 - a)));
+    }
+    out.data.set([...rgb, 255], o);
+  }
+  writePng(sideBySide, out);
+  console.log(`  wrote ${sideBySide}: frame ${frames[j]}, three.js left, inbetween render right`);
+}
+if (failed.length) fail(`${file}: three.js in Chromium differs from inbetween render: ${failed.join('; ')}`);

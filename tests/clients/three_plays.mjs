@@ -1,0 +1,96 @@
+// node three_plays.mjs FILE.glb|FILE.gltf REFERENCE.json [--max-px PX]
+// three.js under Node plays an exported file: GLTFLoader (with meshopt decoding and the
+// KHR_animation_pointer plugin), an AnimationMixer on animation 0 set to (f - A)/fps for every
+// frame f, each vertex read with Mesh.getVertexPosition (morph targets applied) in world space and
+// turned back into drawing pixels (docs/export.md). Compared with REFERENCE.json, the solved and
+// welded frames of tests/tools/welded_frames: every vertex of every frame within 1e-4 shape sizes,
+// or with --max-px within PX drawing pixels (+ 1e-4 shape sizes for float rounding). Also checks:
+// the primitives share their positions and morph weights, at most two weights are nonzero at a
+// frame, the clip lasts (B - A)/fps, and the layers' alpha factors composite to the keys' weights
+// (within 1e-3; with --max-px within 0.02), and to key 0 alone without the pointer plugin.
+import { fail, usage, readJson, inbetweenExtras, toPixels, compositeWeights } from './common.mjs';
+import { THREE, loadGltf, nodeMeshes } from './load_gltf.mjs';
+
+const args = process.argv.slice(2);
+const maxPxAt = args.indexOf('--max-px');
+const maxPx = maxPxAt >= 0 ? Number(args.splice(maxPxAt, 2)[1]) : null;
+usage('node three_plays.mjs FILE.glb|FILE.gltf REFERENCE.json [--max-px PX]', args.length === 2 && (maxPx === null || maxPx >= 0));
+const [file, referenceFile] = args;
+const reference = readJson(referenceFile);
+const { gltf, json } = await loadGltf(file);
+const extras = inbetweenExtras(file, json);
+const s = reference.shapeSize;
+
+// The contract's header against the reference.
+const [A, B] = extras.frames;
+if (extras.canvas[0] !== reference.canvas[0] || extras.canvas[1] !== reference.canvas[1])
+  fail(`${file}: canvas ${extras.canvas} but the drawings are ${reference.canvas}`);
+if (Math.abs(extras.fps - reference.fps) > 1e-9) fail(`${file}: fps ${extras.fps}, the scene's is ${reference.fps}`);
+if (Math.abs(extras.shapeSize - s) > 1e-6 * s) fail(`${file}: shapeSize ${extras.shapeSize}, the solver's is ${s}`);
+const frames = reference.frames.filter((f) => f.index >= A && f.index <= B);
+if (frames.length !== B - A + 1) fail(`${file}: frames ${A}..${B}, the reference has ${reference.frames.map((f) => f.index).join(',')}`);
+if (gltf.animations.length < 1) fail(`${file}: no animation`);
+const clip = gltf.animations[0];
+if (Math.abs(clip.duration - (B - A) / extras.fps) > 1e-5) fail(`${file}: the clip lasts ${clip.duration} s, frames ${A}..${B} at ${extras.fps} fps take ${(B - A) / extras.fps} s`);
+
+const { meshes } = await nodeMeshes(gltf);
+const K = reference.frames[0].weights.length;
+if (meshes.length !== K) fail(`${file}: node 0 has ${meshes.length} primitives, the scene ${K} keys`);
+const n = reference.frames[0].positions.length / 2;
+const mesh = meshes[0];
+const position = mesh.geometry.attributes.position;
+if (position.count !== n) fail(`${file}: ${position.count} vertices, the multimesh has ${n}`);
+const targets = mesh.geometry.morphAttributes.position ?? [];
+if (targets.length === 0) fail(`${file}: no morph targets`);
+// Every primitive: the same positions and targets (so reading primitive 0 reads them all).
+const same = (a, b) => a.count === b.count && a.array.length === b.array.length && Array.from({ length: a.count }, (_, i) =>
+  a.getX(i) === b.getX(i) && a.getY(i) === b.getY(i) && a.getZ(i) === b.getZ(i)).every(Boolean);
+for (const [k, other] of meshes.entries()) {
+  const g = other.geometry;
+  if (!same(g.attributes.position, position)) fail(`${file}: primitive ${k}'s positions differ from primitive 0's`);
+  const t = g.morphAttributes.position ?? [];
+  if (t.length !== targets.length || t.some((a, i) => !same(a, targets[i]))) fail(`${file}: primitive ${k}'s morph targets differ from primitive 0's`);
+}
+
+// Without the pointer plugin: the static alpha factors show key 0 alone.
+{
+  const plain = await nodeMeshes((await loadGltf(file, { pointer: false })).gltf);
+  const factors = plain.meshes.map((m) => m.material.opacity);
+  if (factors[0] !== 1 || factors.slice(1).some((f) => f !== 0)) fail(`${file}: static alpha factors ${factors}, expected 1 then 0s`);
+}
+
+const mixer = new THREE.AnimationMixer(gltf.scene);
+const action = mixer.clipAction(clip);
+action.setLoop(THREE.LoopOnce);  // LoopRepeat would wrap the last frame's time to 0
+action.clampWhenFinished = true;
+gltf.scene.updateMatrixWorld(true);
+const v = new THREE.Vector3();
+let worst = { px: 0, frame: A, vertex: 0 }, worstAlpha = { error: 0, frame: A };
+let mostNonzero = 0;
+for (const frame of frames) {
+  action.reset().play();
+  mixer.setTime((frame.index - A) / extras.fps);
+  gltf.scene.updateMatrixWorld(true);
+  const influences = mesh.morphTargetInfluences;
+  for (const [k, other] of meshes.entries())
+    if (other.morphTargetInfluences.some((w, i) => w !== influences[i])) fail(`${file}: frame ${frame.index}: primitive ${k}'s morph weights differ from primitive 0's`);
+  mostNonzero = Math.max(mostNonzero, influences.filter((w) => w !== 0).length);
+  for (let i = 0; i < n; ++i) {
+    mesh.getVertexPosition(i, v).applyMatrix4(mesh.matrixWorld);
+    const [x, y] = toPixels(v.x, v.y, extras);
+    const d = Math.hypot(x - frame.positions[2 * i], y - frame.positions[2 * i + 1]);
+    if (!(d <= worst.px)) worst = { px: d, frame: frame.index, vertex: i };  // NaN counts as worst
+    if (Number.isNaN(d)) break;
+  }
+  const composite = compositeWeights(meshes.map((m) => m.material.opacity));
+  const alphaError = Math.max(...composite.map((c, k) => Math.abs(c - frame.weights[k])));
+  if (!(alphaError <= worstAlpha.error)) worstAlpha = { error: alphaError, frame: frame.index };
+}
+const bound = (maxPx ?? 0) + 1e-4 * s;
+const alphaBound = maxPx === null ? 1e-3 : 0.02;
+console.log(`${file}: largest error ${worst.px.toPrecision(3)} px = ${(worst.px / s).toExponential(2)} shape sizes` +
+            ` (frame ${worst.frame}, vertex ${worst.vertex}; bound ${bound.toPrecision(3)} px) over ${frames.length} frames x ${n} vertices;` +
+            ` ${targets.length} morph targets, at most ${mostNonzero} nonzero; cross-fade weights within ${worstAlpha.error.toExponential(2)} (frame ${worstAlpha.frame}; bound ${alphaBound})`);
+if (mostNonzero > 2) fail(`${file}: ${mostNonzero} morph weights nonzero at once, the contract says at most 2`);
+if (!(worst.px <= bound)) fail(`${file}: frame ${worst.frame} vertex ${worst.vertex} is ${worst.px} px from the solved frame, more than ${bound}`);
+if (!(worstAlpha.error <= alphaBound)) fail(`${file}: frame ${worstAlpha.frame}: the layers' alpha factors composite to weights ${worstAlpha.error} off the keys'`);
