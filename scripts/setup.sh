@@ -13,7 +13,7 @@ packages=(
   build-essential cmake pkg-config git
   libeigen3-dev libmetis-dev libopenmesh-dev catch2 nlohmann-json3-dev
   libcgal-dev libpotrace-dev libpng-dev
-  libtinygltf-dev libstb-dev
+  libtinygltf-dev libstb-dev libmeshoptimizer-dev
 )
 engine_packages=(
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers glslang-tools
