@@ -109,6 +109,14 @@ int runExport(const std::vector<std::string>& rawArgs) {
   const std::shared_ptr<const Multimesh> played =
       sceneMultimesh(scene, meshOptions, [&](const std::string& stage, double fraction) { progress.update(stage, 0.3 * fraction); })
           .multimesh;
+  // Every frame a 32-bit float target of 12 bytes per vertex: refuse before solving what no glTF
+  // container holds (--max-error and --meshopt shrink it only afterwards, by an amount unknown yet).
+  const double targetBytes = 12.0 * played->vertexCount() * (range[1] - range[0] + 1);
+  if (targetBytes > 3.5 * 1024 * 1024 * 1024)
+    throw InputError("export: " + std::to_string(range[1] - range[0] + 1) + " frames of " + std::to_string(played->vertexCount()) +
+                     " vertices would be " + std::to_string(static_cast<long long>(targetBytes / (1 << 20))) +
+                     " MiB of morph targets, more than a glTF file holds: export fewer frames (--frames) or mesh coarser "
+                     "(a larger edgeLength in " + scene.file + ")");
   gltf::ExportedScene exported;
   exported.name = fs::path(scene.file).parent_path().filename().string();
   if (exported.name.empty() || exported.name == "." || exported.name == "..") exported.name = fs::path(scene.file).stem().string();
@@ -128,8 +136,9 @@ int runExport(const std::vector<std::string>& rawArgs) {
   progress.finish();
   if (folder) folder->keep();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  std::printf("%s: exported frames %d..%d (%d frames at %g fps, %d morph targets, %d layers) in %.2f s\n", scenePath.c_str(),
-              range[0], range[1], report.frames, timeline.fps(), report.targets, report.layers, seconds);
+  std::printf("%s: exported frames %d..%d (%d frame%s at %g fps, %d morph target%s, %d layer%s) in %.2f s\n", scenePath.c_str(),
+              range[0], range[1], report.frames, report.frames == 1 ? "" : "s", timeline.fps(), report.targets,
+              report.targets == 1 ? "" : "s", report.layers, report.layers == 1 ? "" : "s", seconds);
   std::printf("largest vertex error at any frame time: %.3g drawing pixels (%.2g shape sizes)\n", report.maxError,
               report.maxError / baked.shapeSize);
   std::printf("size: %s (%zu bytes); every frame as 32-bit floats: %s (%zu bytes)\n", humanBytes(report.bytes).c_str(),

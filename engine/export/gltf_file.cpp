@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdint>
+#include <cstdio>
 #include <filesystem>
 #include <sstream>
 
@@ -39,6 +40,22 @@ std::string documentJson(const GltfDocument& doc, const std::string& binUri) {
   return json.dump();
 }
 
+// A file name as a relative URI reference: RFC 3986's unreserved characters as they are, every
+// other byte percent-encoded (a space becomes %20).
+std::string uriOf(const std::string& name) {
+  std::string out;
+  for (unsigned char c : name) {
+    if (std::isalnum(c) || c == '-' || c == '.' || c == '_' || c == '~') {
+      out.push_back(static_cast<char>(c));
+    } else {
+      char hex[4];
+      std::snprintf(hex, sizeof hex, "%%%02X", c);
+      out += hex;
+    }
+  }
+  return out;
+}
+
 void appendU32(std::string& out, uint32_t v) {
   for (int b = 0; b < 4; ++b) out.push_back(static_cast<char>((v >> (8 * b)) & 0xff));
 }
@@ -48,6 +65,10 @@ std::string glbBytes(const GltfDocument& doc) {
   while (json.size() % 4) json.push_back(' ');
   std::string bin(doc.bin.begin(), doc.bin.end());
   while (bin.size() % 4) bin.push_back('\0');
+  const uint64_t total = 12 + 8 + json.size() + 8 + bin.size();
+  if (total > 0xFFFFFFFFull)
+    throw InputError("the .glb would be " + std::to_string(total >> 20) +
+                     " MiB, more than the format's 4 GiB: export fewer frames (--frames), drop frames (--max-error) or compress (--meshopt)");
   std::string out;
   appendU32(out, 0x46546C67);  // "glTF"
   appendU32(out, 2);
@@ -73,7 +94,7 @@ Container containerOf(const std::string& path, const std::string& field) {
 
 size_t documentBytes(const GltfDocument& doc, Container container, const std::string& binName) {
   if (container == Container::kGlb) return glbBytes(doc).size();
-  return documentJson(doc, binName).size() + doc.bin.size();
+  return documentJson(doc, uriOf(binName)).size() + doc.bin.size();
 }
 
 void writeDocument(const GltfDocument& doc, const std::string& path) {
@@ -86,7 +107,7 @@ void writeDocument(const GltfDocument& doc, const std::string& path) {
   const bool hadBin = fs::exists(bin);
   writeFileAtomically(bin.string(), std::string(doc.bin.begin(), doc.bin.end()));
   try {
-    writeFileAtomically(path, documentJson(doc, bin.filename().string()));
+    writeFileAtomically(path, documentJson(doc, uriOf(bin.filename().string())));
   } catch (...) {
     std::error_code ignored;
     if (!hadBin) fs::remove(bin, ignored);
