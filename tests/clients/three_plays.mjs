@@ -6,8 +6,9 @@
 // welded frames of tests/tools/welded_frames: every vertex of every frame within 1e-4 shape sizes,
 // or with --max-px within PX drawing pixels (+ 1e-4 shape sizes for float rounding). Also checks:
 // the primitives share their positions and morph weights, at most two weights are nonzero at a
-// frame, the clip lasts (B - A)/fps, and the layers' alpha factors composite to the keys' weights
-// (within 1e-3; with --max-px within 0.02), and to key 0 alone without the pointer plugin.
+// frame, the clip lasts (B - A)/fps (or one frame more, a looping timeline's closing keyframe, which
+// must show frame A again), and the layers' alpha factors composite to the keys' weights (within
+// 1e-3), and without the pointer plugin to frame A's (the static factors).
 import { fail, usage, readJson, inbetweenExtras, toPixels, compositeWeights } from './common.mjs';
 import { THREE, loadGltf, nodeMeshes } from './load_gltf.mjs';
 
@@ -31,7 +32,10 @@ const frames = reference.frames.filter((f) => f.index >= A && f.index <= B);
 if (frames.length !== B - A + 1) fail(`${file}: frames ${A}..${B}, the reference has ${reference.frames.map((f) => f.index).join(',')}`);
 if (gltf.animations.length < 1) fail(`${file}: no animation`);
 const clip = gltf.animations[0];
-if (Math.abs(clip.duration - (B - A) / extras.fps) > 1e-5) fail(`${file}: the clip lasts ${clip.duration} s, frames ${A}..${B} at ${extras.fps} fps take ${(B - A) / extras.fps} s`);
+const span = (B - A) / extras.fps;
+const closes = Math.abs(clip.duration - (span + 1 / extras.fps)) <= 1e-5;  // a loop's closing keyframe
+if (!closes && Math.abs(clip.duration - span) > 1e-5)
+  fail(`${file}: the clip lasts ${clip.duration} s, frames ${A}..${B} at ${extras.fps} fps take ${span} s (${span + 1 / extras.fps} s with a loop's closing keyframe)`);
 
 const { meshes } = await nodeMeshes(gltf);
 const K = reference.frames[0].weights.length;
@@ -52,11 +56,13 @@ for (const [k, other] of meshes.entries()) {
   if (t.length !== targets.length || t.some((a, i) => !same(a, targets[i]))) fail(`${file}: primitive ${k}'s morph targets differ from primitive 0's`);
 }
 
-// Without the pointer plugin: the static alpha factors show key 0 alone.
+// Without the pointer plugin: the static alpha factors, frame A's.
 {
   const plain = await nodeMeshes((await loadGltf(file, { pointer: false })).gltf);
   const factors = plain.meshes.map((m) => m.material.opacity);
-  if (factors[0] !== 1 || factors.slice(1).some((f) => f !== 0)) fail(`${file}: static alpha factors ${factors}, expected 1 then 0s`);
+  const shares = compositeWeights(factors);
+  if (shares.some((w, k) => !(Math.abs(w - frames[0].weights[k]) <= 1e-3)))
+    fail(`${file}: the static alpha factors ${factors} composite to ${shares}, frame ${A}'s weights are ${frames[0].weights}`);
 }
 
 const mixer = new THREE.AnimationMixer(gltf.scene);
@@ -67,30 +73,33 @@ gltf.scene.updateMatrixWorld(true);
 const v = new THREE.Vector3();
 let worst = { px: 0, frame: A, vertex: 0 }, worstAlpha = { error: 0, frame: A };
 let mostNonzero = 0;
-for (const frame of frames) {
+// Plays the clip at `time` and compares with the reference frame `frame` (`label` names it).
+function check(time, frame, label) {
   action.reset().play();
-  mixer.setTime((frame.index - A) / extras.fps);
+  mixer.setTime(time);
   gltf.scene.updateMatrixWorld(true);
   const influences = mesh.morphTargetInfluences;
   for (const [k, other] of meshes.entries())
-    if (other.morphTargetInfluences.some((w, i) => w !== influences[i])) fail(`${file}: frame ${frame.index}: primitive ${k}'s morph weights differ from primitive 0's`);
+    if (other.morphTargetInfluences.some((w, i) => w !== influences[i])) fail(`${file}: ${label}: primitive ${k}'s morph weights differ from primitive 0's`);
   mostNonzero = Math.max(mostNonzero, influences.filter((w) => w !== 0).length);
   for (let i = 0; i < n; ++i) {
     mesh.getVertexPosition(i, v).applyMatrix4(mesh.matrixWorld);
     const [x, y] = toPixels(v.x, v.y, extras);
     const d = Math.hypot(x - frame.positions[2 * i], y - frame.positions[2 * i + 1]);
-    if (!(d <= worst.px)) worst = { px: d, frame: frame.index, vertex: i };  // NaN counts as worst
+    if (!(d <= worst.px)) worst = { px: d, frame: label, vertex: i };  // NaN counts as worst
     if (Number.isNaN(d)) break;
   }
   const composite = compositeWeights(meshes.map((m) => m.material.opacity));
   const alphaError = Math.max(...composite.map((c, k) => Math.abs(c - frame.weights[k])));
-  if (!(alphaError <= worstAlpha.error)) worstAlpha = { error: alphaError, frame: frame.index };
+  if (!(alphaError <= worstAlpha.error)) worstAlpha = { error: alphaError, frame: label };
 }
+for (const frame of frames) check((frame.index - A) / extras.fps, frame, `frame ${frame.index}`);
+if (closes) check(clip.duration, frames[0], `the closing keyframe (frame ${A} again)`);
 const bound = (maxPx ?? 0) + 1e-4 * s;
-const alphaBound = maxPx === null ? 1e-3 : 0.02;
+const alphaBound = 1e-3;
 console.log(`${file}: largest error ${worst.px.toPrecision(3)} px = ${(worst.px / s).toExponential(2)} shape sizes` +
-            ` (frame ${worst.frame}, vertex ${worst.vertex}; bound ${bound.toPrecision(3)} px) over ${frames.length} frames x ${n} vertices;` +
-            ` ${targets.length} morph targets, at most ${mostNonzero} nonzero; cross-fade weights within ${worstAlpha.error.toExponential(2)} (frame ${worstAlpha.frame}; bound ${alphaBound})`);
+            ` (${worst.frame}, vertex ${worst.vertex}; bound ${bound.toPrecision(3)} px) over ${frames.length} frames${closes ? ' and the closing keyframe' : ''} x ${n} vertices;` +
+            ` ${targets.length} morph targets, at most ${mostNonzero} nonzero; cross-fade weights within ${worstAlpha.error.toExponential(2)} (${worstAlpha.frame}; bound ${alphaBound})`);
 if (mostNonzero > 2) fail(`${file}: ${mostNonzero} morph weights nonzero at once, the contract says at most 2`);
-if (!(worst.px <= bound)) fail(`${file}: frame ${worst.frame} vertex ${worst.vertex} is ${worst.px} px from the solved frame, more than ${bound}`);
-if (!(worstAlpha.error <= alphaBound)) fail(`${file}: frame ${worstAlpha.frame}: the layers' alpha factors composite to weights ${worstAlpha.error} off the keys'`);
+if (!(worst.px <= bound)) fail(`${file}: ${worst.frame} vertex ${worst.vertex} is ${worst.px} px from the solved frame, more than ${bound}`);
+if (!(worstAlpha.error <= alphaBound)) fail(`${file}: ${worstAlpha.frame}: the layers' alpha factors composite to weights ${worstAlpha.error} off the keys'`);
