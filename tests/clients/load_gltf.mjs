@@ -24,25 +24,39 @@ class NoTextureDecoding {
   }
 }
 
+function glb(json, bin) {
+  const pad = (b, fill) => Buffer.concat([b, Buffer.alloc((4 - b.length % 4) % 4, fill)]);
+  const text = pad(Buffer.from(JSON.stringify(json)), 0x20), body = pad(bin, 0);
+  const header = Buffer.alloc(12), textHead = Buffer.alloc(8), binHead = Buffer.alloc(8);
+  header.writeUInt32LE(0x46546c67, 0); header.writeUInt32LE(2, 4);
+  header.writeUInt32LE(12 + 8 + text.length + (body.length ? 8 + body.length : 0), 8);
+  textHead.writeUInt32LE(text.length, 0); textHead.writeUInt32LE(0x4e4f534a, 4);
+  binHead.writeUInt32LE(body.length, 0); binHead.writeUInt32LE(0x004e4942, 4);
+  return Buffer.concat([header, textHead, text, ...(body.length ? [binHead, body] : [])]);
+}
+
 // { gltf, json }. pointer: register the KHR_animation_pointer plugin.
 export async function loadGltf(file, { pointer = true } = {}) {
   if (!fs.existsSync(file)) fail(`${file} does not exist`);
-  let data = fs.readFileSync(file);
+  let bytes = fs.readFileSync(file);
   let json;
-  if (data.readUInt32LE(0) !== 0x46546c67) {
-    // .gltf: Node's fetch cannot read file: URLs, so the buffers beside it go in as data: URIs.
-    json = JSON.parse(data.toString('utf8'));
-    for (const buffer of json.buffers ?? []) {
-      if (!buffer.uri || buffer.uri.startsWith('data:')) continue;
-      const bytes = fs.readFileSync(path.resolve(path.dirname(file), decodeURIComponent(buffer.uri)));
-      buffer.uri = 'data:application/octet-stream;base64,' + bytes.toString('base64');
+  if (bytes.readUInt32LE(0) !== 0x46546c67) {
+    // .gltf: FileLoader cannot read file: URLs under Node (nor data: URIs: it needs ProgressEvent),
+    // so the .bin beside it becomes the binary chunk of an equivalent GLB.
+    json = JSON.parse(bytes.toString('utf8'));
+    const [first, ...rest] = json.buffers ?? [];
+    if (rest.some((b) => b.uri !== undefined)) fail(`${file}: more than one buffer with a uri`);
+    let bin = Buffer.alloc(0);
+    if (first?.uri !== undefined) {
+      bin = fs.readFileSync(path.resolve(path.dirname(file), decodeURIComponent(first.uri)));
+      delete first.uri;
     }
-    data = JSON.stringify(json);
+    bytes = glb(json, bin);
   } else {
-    const length = data.readUInt32LE(12);
-    json = JSON.parse(data.toString('utf8', 20, 20 + length));
-    data = data.buffer.slice(data.byteOffset, data.byteOffset + data.byteLength);
+    const length = bytes.readUInt32LE(12);
+    json = JSON.parse(bytes.toString('utf8', 20, 20 + length));
   }
+  const data = bytes.buffer.slice(bytes.byteOffset, bytes.byteOffset + bytes.byteLength);
   const loader = new GLTFLoader();
   await MeshoptDecoder.ready;
   loader.setMeshoptDecoder(MeshoptDecoder);
