@@ -18,8 +18,30 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// A tinygltf value as JSON (for the parts tinygltf 2.7 does not serialize: bufferView extensions).
+nlohmann::json toJson(const tinygltf::Value& v) {
+  switch (v.Type()) {
+    case tinygltf::BOOL_TYPE: return v.Get<bool>();
+    case tinygltf::INT_TYPE: return v.Get<int>();
+    case tinygltf::REAL_TYPE: return v.Get<double>();
+    case tinygltf::STRING_TYPE: return v.Get<std::string>();
+    case tinygltf::ARRAY_TYPE: {
+      nlohmann::json out = nlohmann::json::array();
+      for (size_t i = 0; i < v.ArrayLen(); ++i) out.push_back(toJson(v.Get(static_cast<int>(i))));
+      return out;
+    }
+    case tinygltf::OBJECT_TYPE: {
+      nlohmann::json out = nlohmann::json::object();
+      for (const std::string& key : v.Keys()) out[key] = toJson(v.Get(key));
+      return out;
+    }
+    default: return nullptr;
+  }
+}
+
 // The document's JSON: tinygltf's serialization of everything but the buffers, with the buffers
-// added and channels that target a pointer rather than a node left without "node".
+// added, the bufferViews' extensions (which tinygltf 2.7 drops) put back, and channels that
+// target a pointer rather than a node left without "node".
 std::string documentJson(const GltfDocument& doc, const std::string& binUri) {
   tinygltf::TinyGLTF writer;
   std::ostringstream stream;
@@ -33,6 +55,8 @@ std::string documentJson(const GltfDocument& doc, const std::string& binUri) {
   if (doc.fallbackBytes)
     buffers.push_back({{"byteLength", doc.fallbackBytes}, {"extensions", {{"EXT_meshopt_compression", {{"fallback", true}}}}}});
   json["buffers"] = buffers;
+  for (size_t i = 0; i < doc.model.bufferViews.size(); ++i)
+    for (const auto& [name, value] : doc.model.bufferViews[i].extensions) json["bufferViews"][i]["extensions"][name] = toJson(value);
   if (json.contains("animations"))
     for (nlohmann::json& animation : json["animations"])
       for (nlohmann::json& channel : animation["channels"])
