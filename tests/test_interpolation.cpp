@@ -227,3 +227,25 @@ TEST_CASE("interpolation: on a mesh large enough for several threads, 2 threads 
   REQUIRE(key.converged);
   CHECK((key.x - f.mesh.keyPositions(1)).cwiseAbs().maxCoeff() <= 1e-6 * f.size);
 }
+
+TEST_CASE("interpolation: under the shared metric a strip stretched 4x is 2.5x long halfway; the paper's metric shrinks it") {
+  // ../shared/shape-averaging.md: stretching by k in one direction, the paper's per-key metric
+  // averages lengths harmonically (1.6 at k = 4, halfway), a metric shared by the keys
+  // arithmetically (2.5).
+  const GridMesh g = rectangleGrid(21, 5, 4.0, 1.0);
+  Multimesh mesh(static_cast<int>(g.points.rows()), g.triangles);
+  mesh.addKey(g.points, {}, g.boundary);
+  Eigen::MatrixX2d stretched = g.points;
+  stretched.col(0) *= 4.0;
+  mesh.addKey(stretched, {}, g.boundary);
+  const auto length = [&](ShapeMetric metric, double w1) {
+    InterpolationParams params;
+    params.metric = metric;
+    const Eigen::MatrixX2d x = Interpolator(mesh, params, ib::test::tightSolverOptions()).solve(Eigen::Vector2d(1 - w1, w1)).x;
+    return (x.col(0).maxCoeff() - x.col(0).minCoeff()) / 4.0;
+  };
+  CHECK(length(ShapeMetric::kShared, 0.5) == Approx(2.5).epsilon(1e-3));
+  CHECK(length(ShapeMetric::kPerKey, 0.5) == Approx(1.6).epsilon(1e-2));
+  // Even speed: under the shared metric the length grows linearly in w.
+  for (double w1 : {0.1, 0.25, 0.75, 0.9}) CHECK(length(ShapeMetric::kShared, w1) == Approx(1 + 3 * w1).epsilon(1e-3));
+}

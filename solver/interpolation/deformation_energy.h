@@ -1,10 +1,16 @@
-// W_D, the triangle ARAP energy of eq. (16), summed over keys with interpolation weights:
-//   sum_i w_i sum_t kappa_t a_t(X_i) || F_t(X_i, x) - R_t ||_F^2,   F = D(x) B_ti,
-// where D(x) = [x1 - x0, x2 - x0] (2x2, edge vectors as columns), B_ti = D(X_i)^{-1} and R_t
-// the rotation closest to F (the local step). All positions are n x 2, one row per vertex.
+// W_D, the triangle ARAP energy of eq. (16), summed over keys with interpolation weights. In the
+// paper's form (ShapeMetric::kPerKey):
+//   sum_i w_i sum_t kappa_t a_t(X_i) || F_t(X_i, x) - R_ti ||_F^2,   F = D(x) B_ti,
+// where D(x) = [x1 - x0, x2 - x0] (2x2, edge vectors as columns), B_ti = D(X_i)^{-1} and R_ti
+// the rotation closest to F (the local step). Written with the key's metric M_ti = c_ti B_ti B_ti^T
+// (c_ti = kappa_t a_t(X_i)), key i's term is tr((D - R_ti D_ti) M_ti (D - R_ti D_ti)^T). The
+// shared form (ShapeMetric::kShared, shape_metric.h) puts M_t(w) = sum_j w_j M_tj in every key's
+// term, and R_ti is then the rotation closest to D M_t(w) D_ti^T. All positions are n x 2, one row
+// per vertex.
 #pragma once
 
 #include "core/thread_block.h"
+#include "interpolation/shape_metric.h"
 #include "multimesh/multimesh.h"
 
 #include <Eigen/Core>
@@ -44,7 +50,7 @@ class DeformationEnergy {
   // (both splits with the same thread count; std::invalid_argument if they do not match the
   // mesh). Uses internal buffers: one evaluate() at a time per object.
   double evaluate(const Eigen::MatrixX2d& x, const ActiveKeys& keys, Eigen::MatrixX2d& gradient,
-                  const RowSplit& vertices, const RowSplit& triangles) const;
+                  const RowSplit& vertices, const RowSplit& triangles, ShapeMetric shape = ShapeMetric::kPerKey) const;
 
  private:
   std::vector<Triangle> triangles_;

@@ -221,7 +221,7 @@ void Interpolator::Impl::evaluateState(const Frame& frame, State& s) const {
   s.placement = 0.5 * tie * placement;
   s.energy = s.placement;
   if (frame.springs.size()) s.energy += springEnergyOf(frame.springs, frame.springTarget, s.x, s.gradient);
-  s.energy += deformation_->evaluate(s.x, frame.keys, s.gradient, vertexSplit_, triangleSplit_);
+  s.energy += deformation_->evaluate(s.x, frame.keys, s.gradient, vertexSplit_, triangleSplit_, params_.metric);
   s.energy += cohesive_->evaluate(s.x, frame.w, s.gradient, s.held);
   s.contacts.clear();
   if (params_.nonOverlap) s.energy += nonOverlap_->evaluate(s.x, frame.participants, s.gradient, s.contacts);

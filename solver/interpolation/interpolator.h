@@ -32,6 +32,7 @@
 #pragma once
 
 #include "interpolation/cohesive_params.h"
+#include "interpolation/shape_metric.h"
 #include "multimesh/multimesh.h"
 
 #include <Eigen/Core>
@@ -44,6 +45,10 @@ namespace ib {
 struct InterpolationParams {
   CohesiveParams cohesive;  // lambda, tau, alpha (normalized units)
   bool nonOverlap = false;  // enforce W_O (eq. 14); off by default, as in the paper
+  // How each triangle's keys are averaged (shape_metric.h): kShared, one metric per triangle
+  // blended by the weights (no shrinking or snapping under stretch; a departure from the paper),
+  // or kPerKey, the paper's eq. 9. Default kPerKey.
+  ShapeMetric metric = ShapeMetric::kPerKey;
 };
 
 struct SolverOptions {
