@@ -38,8 +38,12 @@ if (!closes && Math.abs(clip.duration - span) > 1e-5)
   fail(`${file}: the clip lasts ${clip.duration} s, frames ${A}..${B} at ${extras.fps} fps take ${span} s (${span + 1 / extras.fps} s with a loop's closing keyframe)`);
 
 const { meshes } = await nodeMeshes(gltf);
+// One layer per key that has weight in some exported frame, in key order.
 const K = reference.frames[0].weights.length;
-if (meshes.length !== K) fail(`${file}: node 0 has ${meshes.length} primitives, the scene ${K} keys`);
+const drawn = [...Array(K).keys()].filter((k) => frames.some((f) => f.weights[k] > 0));
+const layerWeights = (frame) => drawn.map((k) => frame.weights[k]);
+if (meshes.length !== drawn.length)
+  fail(`${file}: node 0 has ${meshes.length} primitives, the frames draw ${drawn.length} of the scene's ${K} keys`);
 const n = reference.frames[0].positions.length / 2;
 const mesh = meshes[0];
 const position = mesh.geometry.attributes.position;
@@ -61,8 +65,9 @@ for (const [k, other] of meshes.entries()) {
   const plain = await nodeMeshes((await loadGltf(file, { pointer: false })).gltf);
   const factors = plain.meshes.map((m) => m.material.opacity);
   const shares = compositeWeights(factors);
-  if (shares.some((w, k) => !(Math.abs(w - frames[0].weights[k]) <= 1e-3)))
-    fail(`${file}: the static alpha factors ${factors} composite to ${shares}, frame ${A}'s weights are ${frames[0].weights}`);
+  const expected = layerWeights(frames[0]);
+  if (shares.some((w, l) => !(Math.abs(w - expected[l]) <= 1e-3)))
+    fail(`${file}: the static alpha factors ${factors} composite to ${shares}, frame ${A}'s weights are ${expected}`);
 }
 
 const mixer = new THREE.AnimationMixer(gltf.scene);
@@ -90,7 +95,8 @@ function check(time, frame, label) {
     if (Number.isNaN(d)) break;
   }
   const composite = compositeWeights(meshes.map((m) => m.material.opacity));
-  const alphaError = Math.max(...composite.map((c, k) => Math.abs(c - frame.weights[k])));
+  const expected = layerWeights(frame);
+  const alphaError = Math.max(...composite.map((c, l) => Math.abs(c - expected[l])));
   if (!(alphaError <= worstAlpha.error)) worstAlpha = { error: alphaError, frame: label };
 }
 for (const frame of frames) check((frame.index - A) / extras.fps, frame, `frame ${frame.index}`);
