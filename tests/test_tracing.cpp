@@ -84,7 +84,9 @@ TEST_CASE("tracing: separate pieces and an island in a hole are components; spec
 TEST_CASE("tracing: an opaque drawing on paper and a palette PNG trace like the alpha drawing") {
   const auto shape = test::subtract(test::disc(64, 64, 45), test::box(50, 50, 78, 78));
   const double area = loopArea(trace(test::drawShape(128, 128, shape))[0].outer);
-  const auto opaque = trace(test::drawOpaque(128, 128, shape));
+  TracingOptions enclosed;  // the square enclosed by the disc: a hole only when asked (test_paper.cpp)
+  enclosed.holes = PaperHoles::kEnclosedPaper;
+  const auto opaque = trace(test::drawOpaque(128, 128, shape), enclosed);
   REQUIRE(opaque.size() == 1);
   CHECK(opaque[0].holes.size() == 1);
   CHECK(loopArea(opaque[0].outer) == Approx(area).epsilon(0.01));

@@ -181,7 +181,8 @@ BuiltScene buildMultimesh(const Scene& scene, const MultimeshBuildOptions& optio
     try {
       const RgbaImage image = readPng(scene.keys[k].drawing);
       built.drawingSizes.push_back({image.width, image.height});
-      built.outlines.push_back(traceOutlines(shapeMask(image, scene.tracing), scene.tracing, scene.keys[k].drawing));
+      const ShapeMask mask = shapeMask(image, scene.tracing, scene.keys[k].holes, scene.keys[k].drawing);
+      built.outlines.push_back(traceOutlines(mask, scene.tracing, scene.keys[k].drawing));
     } catch (const InputError& e) {
       throw InputError(std::filesystem::path(scene.file).filename().string() + ": key " + inQuotes(scene.keys[k].name) +
                        ": drawing " + e.what());

@@ -1,6 +1,7 @@
 #include "meshing/tracing.h"
 
 #include "core/error.h"
+#include "meshing/paper.h"
 
 #include <potracelib.h>
 
@@ -20,27 +21,23 @@ double loopArea(const Polyline& loop) {
   return 0.5 * twice;
 }
 
-ShapeMask shapeMask(const RgbaImage& image, const TracingOptions& options) {
+ShapeMask shapeMask(const RgbaImage& image, const TracingOptions& options, const Polyline& holePoints,
+                    const std::string& label) {
   ShapeMask mask;
   mask.width = image.width;
   mask.height = image.height;
   mask.inside.assign(static_cast<size_t>(image.width) * image.height, 0);
-  const bool byColour = options.background.has_value() || !image.hasAlpha;
-  const std::array<int, 3> background = options.background.value_or(std::array<int, 3>{255, 255, 255});
-  const double threshold2 = options.colorThreshold * options.colorThreshold;
+  if (tracedByColour(image, options)) {
+    const PaperMap paper = findPaper(image, options, holePoints, label);
+    for (size_t i = 0; i < mask.inside.size(); ++i) mask.inside[i] = !paper.paper[i];
+    return mask;
+  }
+  if (!holePoints.empty())
+    throw InputError(label + ": holes: the drawing has alpha, so its holes are its transparent pixels; remove "
+                     "\"holes\", or set tracing.background to trace it by colour");
   for (int y = 0; y < image.height; ++y)
-    for (int x = 0; x < image.width; ++x) {
-      const uint8_t* p = image.at(x, y);
-      bool inside;
-      if (byColour) {
-        double d2 = 0;
-        for (int c = 0; c < 3; ++c) d2 += double(p[c] - background[c]) * (p[c] - background[c]);
-        inside = d2 > threshold2 && (!image.hasAlpha || p[3] >= options.alphaThreshold);
-      } else {
-        inside = p[3] >= options.alphaThreshold;
-      }
-      mask.inside[static_cast<size_t>(y) * image.width + x] = inside;
-    }
+    for (int x = 0; x < image.width; ++x)
+      mask.inside[static_cast<size_t>(y) * image.width + x] = image.at(x, y)[3] >= options.alphaThreshold;
   return mask;
 }
 

@@ -1,4 +1,4 @@
-// Drawings to outlines: a shape mask from a PNG (alpha, or distance from a background colour),
+// Drawings to outlines: a shape mask from a PNG (alpha, or everything that is not paper: meshing/paper.h),
 // traced by potrace into smooth curves, flattened to polygons. Coordinates are drawing pixels
 // (x right, y down, pixel (i, j) covering [i, i+1] x [j, j+1]).
 #pragma once
@@ -23,6 +23,11 @@ struct Outline {
   std::vector<Polyline> holes;
 };
 
+// Drawings traced by colour: which paper-coloured regions enclosed by the drawing are holes.
+// kMarked: only those a key marks with a point (KeySpec::holes); the rest are part of the shape.
+// kEnclosedPaper: every one (scene `tracing.holes: "enclosed-paper"`). See meshing/paper.h.
+enum class PaperHoles { kMarked, kEnclosedPaper };
+
 struct TracingOptions {
   double tolerance = 0.05;     // px: potrace's curve-joining tolerance and our flattening error
   double minArea = 16;        // px^2: components and holes with less area are specks, dropped
@@ -31,6 +36,7 @@ struct TracingOptions {
   // to the shape. Set background to use it even when the drawing has alpha.
   std::optional<std::array<int, 3>> background;  // default: white for drawings without alpha
   double colorThreshold = 64;                    // 1..441
+  PaperHoles holes = PaperHoles::kMarked;        // default: enclosed paper is part of the shape
 };
 
 // A pixel mask, row-major, true where the shape is.
@@ -40,7 +46,12 @@ struct ShapeMask {
   bool at(int x, int y) const { return inside[static_cast<size_t>(y) * width + x] != 0; }
 };
 
-ShapeMask shapeMask(const RgbaImage& image, const TracingOptions& options);
+// The shape: alpha >= alphaThreshold, or for a drawing traced by colour everything that is not
+// paper (meshing/paper.h; holePoints mark enclosed paper regions that are holes, drawing px).
+// label names the drawing in messages; throws InputError for a misplaced hole point, or for
+// hole points on a drawing traced by alpha (its holes are its transparent pixels).
+ShapeMask shapeMask(const RgbaImage& image, const TracingOptions& options, const Polyline& holePoints = {},
+                    const std::string& label = "drawing");
 
 // Traces the mask into components, largest first. label names the drawing in messages. Throws
 // InputError when nothing is left after dropping specks.

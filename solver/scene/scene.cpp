@@ -46,7 +46,7 @@ CutSpec parseCut(const json& j, const Context& key) {
 }
 
 KeySpec parseKey(const json& j, const Context& scene, const std::filesystem::path& folder) {
-  requireObject(j, scene.in("key"), {"name", "drawing", "features", "cuts"});
+  requireObject(j, scene.in("key"), {"name", "drawing", "features", "cuts", "holes"});
   KeySpec key;
   key.name = text(j, "name", scene.in("key"));
   const Context at = scene.in("key " + inQuotes(key.name));
@@ -69,11 +69,23 @@ KeySpec parseKey(const json& j, const Context& scene, const std::filesystem::pat
           throw at.error("cut " + inQuotes(key.cuts.back().name) + " is drawn twice");
     }
   }
+  if (j.contains("holes")) {
+    if (!j["holes"].is_array()) throw at.in("holes").error("must be an array of points [x, y], one inside each hole");
+    for (size_t i = 0; i < j["holes"].size(); ++i)
+      key.holes.push_back(point(j["holes"][i], at.in("holes").in("point " + std::to_string(i + 1))));
+  }
   return key;
 }
 
 void parseTracing(const json& j, const Context& at, TracingOptions& t) {
-  requireObject(j, at, {"tolerance", "min_area", "alpha_threshold", "background", "color_threshold"});
+  requireObject(j, at, {"tolerance", "min_area", "alpha_threshold", "background", "color_threshold", "holes"});
+  if (j.contains("holes")) {
+    const std::string holes = text(j, "holes", at);
+    if (holes == "marked") t.holes = PaperHoles::kMarked;
+    else if (holes == "enclosed-paper") t.holes = PaperHoles::kEnclosedPaper;
+    else throw at.in("holes").error(inQuotes(holes) + " is not \"marked\" (enclosed paper is shape unless a key's "
+                                    "\"holes\" marks it) or \"enclosed-paper\" (every enclosed paper region is a hole)");
+  }
   t.tolerance = number(j, "tolerance", t.tolerance, at, 0, 10, true);
   t.minArea = number(j, "min_area", t.minArea, at, 0, 1e9);
   t.alphaThreshold = static_cast<int>(number(j, "alpha_threshold", t.alphaThreshold, at, 1, 255));

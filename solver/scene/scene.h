@@ -37,6 +37,9 @@ struct KeySpec {
   std::string drawing;                               // path, resolved against the scene's folder
   std::map<std::string, Eigen::Vector2d> features;   // placed by the author, drawing pixels
   std::vector<CutSpec> cuts;                         // cuts closed in this key
+  // Drawings traced by colour: a point inside each enclosed paper region that is a hole (else
+  // enclosed paper is part of the shape), drawing pixels; "holes" in the scene.
+  Polyline holes = {};
 };
 
 struct SceneSolverParams {
