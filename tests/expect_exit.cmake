@@ -1,6 +1,6 @@
 # Runs COMMAND with ARGS (words joined by "|") and fails unless it exits with EXPECTED. For exit code 2 the
-# message must start with "inbetween:" (and contain MESSAGE when given); for a bench run stdout must hold a
-# "bench" JSON object.
+# message must start with "inbetween:"; stderr must match MESSAGE when given (whatever the exit code: a
+# note on exit 0) and must not match NOT_MESSAGE; for a bench run stdout must hold a "bench" JSON object.
 string(REPLACE "|" ";" args "${ARGS}")
 # `render ... -o DIR`: DIR starts empty, so the checks below see only this run's files.
 if("${ARGS}" MATCHES "^render[|]" AND "${ARGS}" MATCHES "[|]-o[|]([^|]+)")
@@ -16,6 +16,10 @@ if(EXPECTED EQUAL 2 AND NOT err MATCHES "^(inbetween: |usage: )")
 endif()
 if(DEFINED MESSAGE AND NOT err MATCHES "${MESSAGE}")
   message(FATAL_ERROR "message does not mention '${MESSAGE}': '${err}'")
+endif()
+# NOT_MESSAGE: stderr must not match it (e.g. no note for a scene with nothing odd).
+if(DEFINED NOT_MESSAGE AND err MATCHES "${NOT_MESSAGE}")
+  message(FATAL_ERROR "stderr mentions '${NOT_MESSAGE}': '${err}'")
 endif()
 # Benchmarks: every stdout line a JSON object of the case's kind with a positive time (and for
 # interp a positive yardstick time).

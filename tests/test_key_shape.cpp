@@ -118,7 +118,72 @@ TEST_CASE("shared boundary: a feature on another loop is reported with the key a
   ShapeLoop one{squareOutline().outer, {"p", "q", "", ""}};
   ShapeLoop first{squareOutline().outer, {"p", "", "", ""}}, second{squareOutline(150).outer, {"q", "", "", ""}};
   CHECK_THROWS_WITH(matchBoundaries(scene, {KeyShape{"a", {one}}, KeyShape{"b", {first, second}}}, SharedBoundaryOptions{}),
-                    Catch::Contains("loops do not match") && Catch::Contains("key \"b\" feature \"q\" lies on another loop"));
+                    Catch::StartsWith("test.json: outlines do not match: in key \"a\" \"p\" and \"q\" are on one piece "
+                                      "around (50, 50), 10000 px\u00b2") &&
+                        Catch::Contains("but in key \"b\" \"q\" is on a piece around (200, 50), 10000 px\u00b2 (with \"q\")") &&
+                        Catch::Contains("a \"split\" cut in key \"a\" where its piece comes apart") &&
+                        Catch::Contains("if \"q\" is on the wrong outline, move it") && !Catch::Contains("loop"));
+}
+
+namespace {
+
+ShapeLoop plain(Polyline points) { return {points, std::vector<std::string>(points.size())}; }
+ShapeLoop hole(double x0, double y0, double size) {  // clockwise in a y-up frame: negative loopArea
+  return plain({{x0, y0}, {x0, y0 + size}, {x0 + size, y0 + size}, {x0 + size, y0}});
+}
+Scene twoKeys() {
+  KeySpec a, b;
+  a.name = "a";
+  b.name = "b";
+  return sceneWith({a, b});
+}
+std::string mismatchOf(const std::vector<ShapeLoop>& a, const std::vector<ShapeLoop>& b) {
+  try {
+    matchBoundaries(twoKeys(), {KeyShape{"a", a}, KeyShape{"b", b}}, SharedBoundaryOptions{});
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+}  // namespace
+
+TEST_CASE("shared boundary: an extra hole names its key, where it is, its area and the cuts that make the topology match") {
+  const ShapeLoop square = plain(squareOutline().outer);
+  const std::string message = mismatchOf({square}, {square, hole(40, 40, 20)});
+  INFO(message);
+  CHECK(message.rfind("test.json: outlines do not match: key \"b\" has a hole that key \"a\" does not", 0) == 0);
+  CHECK(message.find("hole around (50, 50), 400 px\u00b2") != std::string::npos);
+  CHECK(message.find("draw a \"slit\" cut in key \"a\" where it opens") != std::string::npos);
+  CHECK(message.find("draw a \"split\" cut in key \"b\" from the hole to the outline") != std::string::npos);
+  CHECK(message.find("fill it in key \"b\"'s drawing") != std::string::npos);
+  CHECK(message.find("When the keys' topology differs") != std::string::npos);
+  CHECK(message.find("loop") == std::string::npos);
+  CHECK(message.find("place features") == std::string::npos);
+  // The other way round: the reference key has the hole.
+  CHECK(mismatchOf({square, hole(40, 40, 20)}, {square}).find("key \"a\" has a hole that key \"b\" does not") != std::string::npos);
+}
+
+TEST_CASE("shared boundary: an extra piece names its key, where it is, its area and the split that makes the topology match") {
+  const ShapeLoop square = plain(squareOutline().outer), speck = plain(squareOutline(150, 20).outer);
+  const std::string message = mismatchOf({square}, {square, speck});
+  INFO(message);
+  CHECK(message.find("key \"b\" has a piece that key \"a\" does not (of the pieces without features, \"b\" has 2 and "
+                     "\"a\" 1): piece around (160, 10), 400 px\u00b2") != std::string::npos);
+  CHECK(message.find("draw a \"split\" cut in key \"a\" where the pieces separate") != std::string::npos);
+  CHECK(message.find("erase it from key \"b\"'s drawing") != std::string::npos);
+  // A hole in one key and a piece in the other: both are named.
+  const std::string both = mismatchOf({square, hole(40, 40, 20)}, {square, speck});
+  CHECK(both.find("key \"b\" has a piece that key \"a\" does not") != std::string::npos);
+  CHECK(both.find("; and key \"a\" has a hole that key \"b\" does not") != std::string::npos);
+}
+
+TEST_CASE("shared boundary: holes that fit as well either way round ask for features; holes that moved a little match") {
+  const ShapeLoop square = plain(squareOutline().outer);
+  const std::string turned = mismatchOf({square, hole(20, 40, 20), hole(60, 40, 20)}, {square, hole(40, 20, 20), hole(40, 60, 20)});
+  INFO(turned);
+  CHECK(turned.find("about as well either way round: place a feature on each of them, in every key") != std::string::npos);
+  CHECK(mismatchOf({square, hole(20, 40, 20), hole(60, 40, 20)}, {square, hole(24, 42, 20), hole(63, 38, 20)}) == "no error");
 }
 
 TEST_CASE("untangle: a grid with folded interior vertices and a fixed boundary ends with every triangle positive") {

@@ -276,3 +276,34 @@ TEST_CASE("pipeline: readKeyDrawings reads every key's drawing at its size") {
     CHECK(drawings[k].height == built.drawingSizes[k][1]);
   }
 }
+
+TEST_CASE("pipeline: keys on canvases of different sizes and a one-key scene come with notes, whatever the source") {
+  const std::string folder = test::scratchDirectory("pipeline-notes");
+  ib::writePng(folder + "/a.png", test::drawShape(128, 128, test::box(28, 28, 100, 100)));
+  ib::writePng(folder + "/b.png", test::drawShape(140, 128, test::box(28, 28, 100, 100)));
+  const auto write = [&](const std::string& name, const std::string& keys) {
+    writeFileAtomically(folder + "/" + name, R"({"version": 1, "edge_length": 12, "keys": [)" + keys + "]}");
+    return loadScene(folder + "/" + name);
+  };
+  const Scene same = write("same.json", R"({"name": "a", "drawing": "a.png"}, {"name": "a2", "drawing": "a.png"})");
+  CHECK(sceneNotes(same).empty());
+  const Scene sizes = write("sizes.json", R"({"name": "a", "drawing": "a.png"}, {"name": "b", "drawing": "b.png"})");
+  const std::string canvas =
+      "sizes.json: keys have different canvas sizes (128x128 for \"a\", 140x128 for \"b\"): positions are drawing pixels "
+      "from each drawing's top-left, so the drawings line up at their top-left corners; the renderer's canvas is the "
+      "largest, 140x128 (draw every key on the same canvas to place them otherwise)";
+  CHECK(sceneNotes(sizes) == std::vector<std::string>{canvas});
+  SceneMultimeshOptions options;
+  options.comesh = false;
+  const SceneMultimesh built = sceneMultimesh(sizes, options);
+  CHECK(built.notes == std::vector<std::string>{canvas});
+  saveMultimesh(*built.multimesh, folder + "/sizes.ibmesh");
+  options.meshFile = folder + "/sizes.ibmesh";
+  CHECK(sceneMultimesh(sizes, options).notes == std::vector<std::string>{canvas});
+  const Scene one = write("one.json", R"({"name": "a", "drawing": "a.png"})");
+  REQUIRE(sceneNotes(one).size() == 1);
+  CHECK(sceneNotes(one)[0].rfind("one.json: one key (\"a\"): the animation is a still", 0) == 0);
+  // A drawing that cannot be read gives no canvas note: reading it says what is wrong.
+  const Scene missing = write("missing.json", R"({"name": "a", "drawing": "a.png"}, {"name": "b", "drawing": "none.png"})");
+  CHECK(sceneNotes(missing).empty());
+}

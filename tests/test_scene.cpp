@@ -96,7 +96,15 @@ TEST_CASE("scene: a key that does not place a cut's feature is named with the cu
 TEST_CASE("scene: every malformed or inconsistent field is an input error naming file, key and field") {
   const std::vector<std::pair<std::function<void(json&)>, std::string>> cases = {
       {[](json& j) { j["colour"] = 1; }, "square-arch.json: unknown field \"colour\""},
-      {[](json& j) { j["keys"][1]["feature"] = json::object(); }, "key: unknown field \"feature\""},
+      {[](json& j) { j["keys"][1]["feature"] = json::object(); }, "key \"arch\": unknown field \"feature\""},
+      {[](json& j) { j["keys"][1]["colour"] = "red"; j["keys"][1].erase("name"); }, "key 2: unknown field \"colour\""},
+      {[](json& j) { j["keys"][0]["cuts"][0]["width"] = 2; }, "key \"square\": cut \"split\": unknown field \"width\""},
+      {[](json& j) { j["keys"][0]["cuts"][0].erase("name"); j["keys"][0]["cuts"][0]["nmae"] = "x"; },
+       "key \"square\": cut 1: unknown field \"nmae\""},
+      {[](json& j) { j["tracing"]["colour"] = 1; }, "tracing: unknown field \"colour\""},
+      {[](json& j) { j["solver"]["colour"] = 1; }, "solver: unknown field \"colour\""},
+      {[](json& j) { j["timeline"] = {{"marks", {{{"time", 0}, {"key", "square"}}, {{"time", 1}, {"key", "arch"}, {"easing", "linear"}}}}}; },
+       "timeline: mark 2: unknown field \"easing\""},
       {[](json& j) { j["version"] = 2; }, "version: must be 1"},
       {[](json& j) { j["edge_length"] = -1; }, "edge_length: -1"},
       {[](json& j) { j["reference"] = "circle"; }, "reference: must name one of the keys"},
@@ -112,8 +120,9 @@ TEST_CASE("scene: every malformed or inconsistent field is an input error naming
       {[](json& j) { j["keys"][0]["cuts"][0]["points"] = {{1, 2}}; }, "cut \"split\": needs \"points\""},
       {[](json& j) { j["keys"][0]["cuts"][0]["name"] = "a.b"; }, "may not contain '.'"},
       {[](json& j) { j["keys"][0]["features"]["split.tip"] = {64, 60}; }, "key \"square\" draws the cut"},
-      {[](json& j) { j["keys"][1]["features"]["split.mouth"] = {1, 1}; }, "feature \"split.mouth\" is not one"},
-      {[](json& j) { j["keys"][1]["features"]["gap.tip"] = {1, 1}; }, "feature \"gap.tip\" names no cut"},
+      {[](json& j) { j["keys"][1]["features"]["split.mouth"] = {1, 1}; },
+       "key \"arch\": feature \"split.mouth\": names with a '.' are reserved for the features cuts create"},
+      {[](json& j) { j["keys"][1]["features"]["gap.tip"] = {1, 1}; }, "and this scene has no cut \"gap\": rename it to \"gap-tip\""},
       {[](json& j) { j["keys"][1]["cuts"] = j["keys"][0]["cuts"]; }, "cut \"split\": is closed in every key"},
       {[](json& j) { j["keys"] = json::array(); }, "keys: needs at least one key"},
       {[](json& j) { j["timeline"] = {{"marks", {{{"time", 0}, {"key", "circle"}}}}}; },
@@ -126,7 +135,11 @@ TEST_CASE("scene: every malformed or inconsistent field is an input error naming
       {[](json& j) { j["stiffness"] = {{"image", {{"key", "circle"}, {"path", "s.png"}}}}; },
        "stiffness: image: key: \"circle\" is not a key"},
       {[](json& j) { j["stiffness"] = {{"regions", {{{"name", "head"}, {"key", "arch"}, {"polygon", {{0, 0}, {1, 1}}}}}}}; },
-       "stiffness: region: \"head\": needs \"polygon\": at least 3 points"},
+       "stiffness: region \"head\": needs \"polygon\": at least 3 points"},
+      {[](json& j) { j["stiffness"] = {{"regions", {{{"name", "head"}, {"key", "arch"}, {"colour", 1}}}}}; },
+       "stiffness: region \"head\": unknown field \"colour\""},
+      {[](json& j) { j["stiffness"] = {{"regions", {{{"key", "arch"}, {"colour", 1}}}}}; }, "stiffness: region 1: unknown field"},
+      {[](json& j) { j["stiffness"] = {{"image", {{"key", "arch"}, {"colour", 1}}}}; }, "stiffness: image: unknown field \"colour\""},
   };
   for (const auto& [edit, expected] : cases) {
     json j = squareArch();
@@ -136,6 +149,31 @@ TEST_CASE("scene: every malformed or inconsistent field is an input error naming
     CHECK(message.rfind("square-arch.json: ", 0) == 0);
     CHECK(message.find(expected) != std::string::npos);
   }
+}
+
+TEST_CASE("scene: a dotted plain feature says dots are reserved for cut features and what to rename it to") {
+  json j = squareArch();
+  j["keys"][0]["features"]["a.b"] = {64, 24};
+  j["keys"][1]["features"]["a.b"] = {64, 20};
+  CHECK(messageOf(j) ==
+        "square-arch.json: key \"square\": feature \"a.b\": names with a '.' are reserved for the features cuts create "
+        "(CUT.left, CUT.right, CUT.tip for a notch named CUT; see docs/scene-format.md, \"Features and cuts\"), and this "
+        "scene has no cut \"a\": rename it to \"a-b\" in every key that places it");
+  json lip = squareArch();
+  lip["keys"][1]["features"]["split.lip"] = {64, 20};
+  CHECK(messageOf(lip).find("and cut \"split\" creates \"split.left\", \"split.right\", \"split.tip\": use one of "
+                            "those, or if \"split.lip\" is a plain feature, rename it to \"split-lip\"") != std::string::npos);
+}
+
+TEST_CASE("scene: a one-key scene loads with a note that the animation is a still; two keys give no note") {
+  json j = squareArch();
+  CHECK(parseScene(j.dump(), "scenes/square-arch.json").notes.empty());
+  j["keys"].erase(1);
+  j["keys"][0].erase("cuts");
+  const Scene scene = parseScene(j.dump(), "scenes/square-arch.json");
+  REQUIRE(scene.notes.size() == 1);
+  CHECK(scene.notes[0] == "square-arch.json: one key (\"square\"): the animation is a still, every frame that key's "
+                          "drawing; add keys to animate");
 }
 
 TEST_CASE("scene: malformed JSON and a missing scene file are input errors naming the file") {

@@ -89,6 +89,7 @@ int runExport(const std::vector<std::string>& rawArgs) {
 
   gltf::checkGltfPath(output, "-o");  // before the long work: fail fast on a wrong name
   const Scene scene = loadScene(scenePath);
+  for (const std::string& note : sceneNotes(scene)) std::fprintf(stderr, "inbetween: note: %s\n", note.c_str());
   std::vector<RgbaImage> drawings = readKeyDrawings(scene);
   Timeline timeline = scene.timeline;
   if (arguments.has("fps"))

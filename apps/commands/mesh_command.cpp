@@ -99,6 +99,7 @@ int runMesh(const std::vector<std::string>& rawArgs) {
     if (pictures) writePictures(scene, built, *built.initial, output, "", summary["initial"]);
   }
   progress.finish();
+  for (const std::string& note : built.notes) std::fprintf(stderr, "inbetween: note: %s\n", note.c_str());
   if (options.flag("json")) {
     std::printf("%s\n", summary.dump().c_str());
     return 0;

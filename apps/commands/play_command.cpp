@@ -166,6 +166,10 @@ int runPlay(const std::vector<std::string>& rawArgs) {
   *loading = false;
   progress.finish();
   play::PlayerSession session(std::move(reloader), workerOptions);
+  for (const std::string& note : sceneNotes(session.scene().scene)) {  // on stderr, and in the window's messages
+    std::fprintf(stderr, "inbetween: note: %s\n", note.c_str());
+    session.messages().push_back({"note: " + note, false});
+  }
   for (const std::string& assignment : split.sets) session.parameters().setFromText(assignment);
   if (arguments.has("weights")) {
     session.setWeights(parseWeights(arguments.value("weights", ""), session.keyNames()));

@@ -99,10 +99,12 @@ int runRender(const std::vector<std::string>& rawArgs) {
 
   cli::Progress progress;
   std::string source;
+  std::vector<std::string> notes;
   const std::shared_ptr<const Multimesh> played = [&] {  // the build's initial map and report let go here
     const SceneMultimesh built =
         sceneMultimesh(scene, options.mesh, [&](const std::string& stage, double fraction) { progress.update(stage, 0.3 * fraction); });
     source = describeSource(built);
+    notes = built.notes;
     return built.multimesh;
   }();
   const Multimesh& mesh = *played;
@@ -154,6 +156,7 @@ int runRender(const std::vector<std::string>& rawArgs) {
   const std::string sheetPath = (dir / "contact_sheet.png").string();
   writePng(sheetPath, render::contactSheet(tiles, {}));
   progress.finish();
+  for (const std::string& note : notes) std::fprintf(stderr, "inbetween: note: %s\n", note.c_str());
   if (options.validation && !context.validationMessages().empty())
     throw std::runtime_error("render: the validation layer reported: " + context.validationMessages().front());
   folder.keep();

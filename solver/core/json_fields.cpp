@@ -6,6 +6,12 @@ namespace ib::json_fields {
 
 using nlohmann::json;
 
+Context element(const json& j, const Context& parent, const std::string& what, size_t index) {
+  if (j.is_object() && j.contains("name") && j["name"].is_string() && !j["name"].get<std::string>().empty())
+    return parent.in(what + " " + inQuotes(j["name"].get<std::string>()));
+  return parent.in(what + " " + std::to_string(index + 1));
+}
+
 void requireObject(const json& j, const Context& at, const std::set<std::string>& allowed) {
   if (!j.is_object()) throw at.error("must be a JSON object");
   for (auto it = j.begin(); it != j.end(); ++it)

@@ -21,6 +21,10 @@ struct Context {
   }
 };
 
+// Where an element of an array of objects sits, before it is validated: `what "NAME"` when it has a
+// non-empty string "name", else `what N` (N from 1), e.g. `key "arch"` or `cut 2`.
+Context element(const nlohmann::json& j, const Context& parent, const std::string& what, size_t index);
+
 // Throws unless j is an object whose fields are all in `allowed`.
 void requireObject(const nlohmann::json& j, const Context& at, const std::set<std::string>& allowed);
 

@@ -2,7 +2,10 @@
 
 #include "core/error.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
+#include <array>
+#include <cstdio>
 #include <cmath>
 #include <filesystem>
 #include <limits>
@@ -39,6 +42,55 @@ Eigen::Vector2d centroid(const Polyline& loop) {
   Eigen::Vector2d c = Eigen::Vector2d::Zero();
   for (const auto& p : loop) c += p;
   return c / std::max<size_t>(loop.size(), 1);
+}
+
+bool isPiece(const Polyline& loop) { return loopArea(loop) > 0; }
+
+// How far apart two loops are for pairing: centroids, and sizes (nested loops share a centre).
+double loopDistance(const Polyline& a, const Polyline& b) {
+  return (centroid(a) - centroid(b)).norm() + std::abs(std::sqrt(std::abs(loopArea(a))) - std::sqrt(std::abs(loopArea(b))));
+}
+
+}  // namespace
+
+std::string describeLoop(const Polyline& loop) {
+  const double area = loopArea(loop);
+  Eigen::AlignedBox2d box;
+  for (const auto& p : loop) box.extend(p);
+  const Eigen::Vector2d c = box.isEmpty() ? Eigen::Vector2d(0, 0) : Eigen::Vector2d(box.center());
+  char text[128];
+  std::snprintf(text, sizeof text, "%s around (%.0f, %.0f), %.0f px\u00b2",
+                area > 0 ? "piece" : std::abs(area) < 1e-6 ? "slit" : "hole", c.x(), c.y(), std::abs(area));
+  return text;
+}
+
+namespace {
+
+const char* const kTopologyDoc = " (docs/scene-format.md, \"When the keys' topology differs\")";
+
+std::string count(size_t n, const std::string& what) {
+  return std::to_string(n) + " " + what + (n == 1 ? "" : "s");
+}
+
+// Key `more` has featureless loops of one kind (pieces or holes) that key `fewer` lacks: which, where, and
+// the cut or drawing fix that makes the topology match.
+std::string extraLoops(const std::string& more, const std::string& fewer, bool pieces, size_t moreCount,
+                       size_t fewerCount, const std::vector<const Polyline*>& extras) {
+  const std::string kind = pieces ? "piece" : "hole";
+  std::string out = "key " + inQuotes(more) + " has " + (extras.size() == 1 ? "a " + kind : count(extras.size(), kind)) +
+                    " that key " + inQuotes(fewer) + " does not (of the " + kind + "s without features, " + inQuotes(more) +
+                    " has " + std::to_string(moreCount) + " and " + inQuotes(fewer) + " " + std::to_string(fewerCount) + "): ";
+  for (size_t i = 0; i < extras.size() && i < 3; ++i) out += (i ? "; " : "") + describeLoop(*extras[i]);
+  if (extras.size() > 3) out += "; ...";
+  if (pieces)
+    return out + ". If it is part of a piece of key " + inQuotes(fewer) + " that comes apart, draw a \"split\" cut in key " +
+           inQuotes(fewer) + " where the pieces separate and place its features in key " + inQuotes(more) +
+           "; if it should not be there, erase it from key " + inQuotes(more) + "'s drawing" + kTopologyDoc;
+  return out + ". If the hole opens where key " + inQuotes(fewer) + " is solid, draw a \"slit\" cut in key " +
+         inQuotes(fewer) + " where it opens and place its features in key " + inQuotes(more) + "; if key " +
+         inQuotes(fewer) + " has it open to the outside, draw a \"split\" cut in key " + inQuotes(more) +
+         " from the hole to the outline; if it should not be there, fill it in key " + inQuotes(more) + "'s drawing" +
+         kTopologyDoc;
 }
 
 // Arc length on `target` where a rigid motion of `source` sampled from its start fits best.
@@ -95,7 +147,7 @@ class Matcher {
   }
 
  private:
-  InputError mismatch(const std::string& what) const { return InputError(file_ + ": loops do not match: " + what); }
+  InputError mismatch(const std::string& what) const { return InputError(file_ + ": outlines do not match: " + what); }
   std::string keyName(int k) const { return "key " + inQuotes(shapes_[k].key); }
 
   void addArcs(int loop) {
@@ -143,54 +195,115 @@ class Matcher {
     if (want == have) return;
     for (const std::string& f : want)
       if (std::find(have.begin(), have.end(), f) == have.end()) {
-        const auto [loop, point] = findFeature(key, f);
-        (void)point;
-        throw mismatch("in " + keyName(ref_) + " one loop carries " + list(want) + ", but in " + keyName(k) + " feature " +
-                       inQuotes(f) + (loop < 0 ? " is missing" : " lies on another loop (with " +
-                                                                  list(names(featuresFrom(key.loops[loop], 0))) + ")"));
+        if (findFeature(key, f).first < 0)
+          throw mismatch("in " + keyName(ref_) + " one outline carries " + list(want) + ", but " + keyName(k) +
+                         " has no feature " + inQuotes(f));
+        throw apart(ref_, k, want[0], f);
       }
     for (const std::string& f : have)
-      if (std::find(want.begin(), want.end(), f) == want.end())
-        throw mismatch("in " + keyName(k) + " one loop carries " + list(have) + ", but in " + keyName(ref_) +
-                       " feature " + inQuotes(f) + " is not on the loop with " + list(want));
-    throw mismatch("the loop with " + list(want) + " runs " + list(want) + " in " + keyName(ref_) + " but " + list(have) +
-                   " in " + keyName(k) + " (same features, different order)");
+      if (std::find(want.begin(), want.end(), f) == want.end()) throw apart(k, ref_, have[0], f);
+    throw mismatch("the " + describeLoop(shapes_[ref_].loops[findFeature(shapes_[ref_], want[0]).first].points) +
+                   " runs " + list(want) + " in " + keyName(ref_) + " but " + list(have) + " in " + keyName(k) +
+                   " (same features, different order): place them in the same order along the outline in every key "
+                   "(a cut's left and right are as seen walking in)");
   }
 
-  // Pairs the loops without features by nearest centroid and size among loops of the same kind (outer or
-  // hole) and starts each at its best rigid alignment with the reference loop.
+  // Features `first` and `f` lie on one loop in key `one` but on two in key `two`: the topology differs
+  // there (a split is missing) or `f` is placed on the wrong outline.
+  InputError apart(int one, int two, const std::string& first, const std::string& f) const {
+    const auto loopOf = [&](int k, const std::string& name) -> const ShapeLoop& {
+      return shapes_[k].loops[findFeature(shapes_[k], name).first];
+    };
+    const ShapeLoop& joined = loopOf(one, first);
+    const ShapeLoop &a = loopOf(two, first), &b = loopOf(two, f);
+    const std::string cut = isPiece(a.points) && isPiece(b.points)
+                                ? "a \"split\" cut in " + keyName(one) + " where its piece comes apart into the two of " +
+                                      keyName(two)
+                                : "a \"split\" cut in " + keyName(two) + " from its hole to the outline, where " +
+                                      keyName(one) + " is open to the outside";
+    return mismatch("in " + keyName(one) + " " + inQuotes(first) + " and " + inQuotes(f) + " are on one " +
+                    describeLoop(joined.points) + " (with " + list(names(featuresFrom(joined, 0))) + "), but in " +
+                    keyName(two) + " " + inQuotes(f) + " is on a " + describeLoop(b.points) + " (with " +
+                    list(names(featuresFrom(b, 0))) + ") and " + inQuotes(first) + " on a " + describeLoop(a.points) +
+                    ". If the keys' topology differs there, " + cut + " makes it match; if " + inQuotes(f) +
+                    " is on the wrong outline, move it in one of the keys" + kTopologyDoc);
+  }
+
+  // Pairs the loops without features with the reference key's, pieces with pieces and holes with holes, by
+  // nearest centroid and size, and starts each at its best rigid alignment with the reference loop. Counts
+  // that differ are an extra hole or piece in one key; pairings as good either way round need features.
   void matchFeatureless(int k, const std::vector<int>& refLoops, std::vector<bool>& used) {
     const KeyShape& ref = shapes_[ref_];
     const KeyShape& key = shapes_[k];
-    std::vector<int> candidates;
+    std::array<std::vector<int>, 2> want, have;  // [pieces, holes]
+    for (int l : refLoops) want[isPiece(ref.loops[l].points) ? 0 : 1].push_back(l);
     for (size_t l = 0; l < key.loops.size(); ++l)
-      if (!used[l]) candidates.push_back(static_cast<int>(l));
-    if (candidates.size() != refLoops.size())
-      throw mismatch(keyName(ref_) + " has " + std::to_string(refLoops.size()) + " loop(s) without features, but " +
-                     keyName(k) + " has " + std::to_string(candidates.size()) +
-                     " (place features to say which loop becomes which)");
-    for (int l : refLoops) {
-      const bool outer = loopArea(ref.loops[l].points) > 0;
-      const Eigen::Vector2d c = centroid(ref.loops[l].points);
-      const double size = std::sqrt(std::abs(loopArea(ref.loops[l].points)));
-      int best = -1;
-      double bestDistance = std::numeric_limits<double>::infinity();
-      for (int cand : candidates) {
-        if (used[cand] || (loopArea(key.loops[cand].points) > 0) != outer) continue;
-        // Nested loops share a centre: tell them apart by size too.
-        const double d = (centroid(key.loops[cand].points) - c).norm() +
-                         std::abs(std::sqrt(std::abs(loopArea(key.loops[cand].points))) - size);
-        if (d < bestDistance) bestDistance = d, best = cand;
+      if (!used[l]) have[isPiece(key.loops[l].points) ? 0 : 1].push_back(static_cast<int>(l));
+    std::string extra;
+    for (int kind = 0; kind < 2; ++kind)
+      if (want[kind].size() != have[kind].size()) {
+        const bool refMore = want[kind].size() > have[kind].size();
+        const KeyShape &more = refMore ? ref : key, &fewer = refMore ? key : ref;
+        const std::vector<int>& fewerLoops = refMore ? have[kind] : want[kind];
+        std::vector<int> left = refMore ? want[kind] : have[kind];
+        for (int l : fewerLoops) left.erase(left.begin() + nearest(fewer.loops[l].points, more, left));
+        std::vector<const Polyline*> extras;
+        for (int l : left) extras.push_back(&more.loops[l].points);
+        extra += (extra.empty() ? "" : "; and ") + extraLoops(more.key, fewer.key, kind == 0, std::max(want[kind].size(), have[kind].size()),
+                                                             fewerLoops.size(), extras);
       }
-      if (best < 0)
-        throw mismatch(keyName(k) + " has no " + (outer ? "outline" : "hole") + " without features to match the one of " +
-                       keyName(ref_) + " around " + std::to_string(static_cast<int>(c.x())) + ", " +
-                       std::to_string(static_cast<int>(c.y())));
-      used[best] = true;
-      KeyBoundary& kb = out_.keys[k];
-      kb.loops[l] = ArcLengthLoop(key.loops[best].points);
-      const ArcLengthLoop refLoop(ref.loops[l].points);
-      kb.arcStarts[l] = {k == ref_ ? 0.0 : alignedStart(refLoop, kb.loops[l], options_.alignmentSamples)};
+    if (!extra.empty()) throw mismatch(extra);
+    for (int kind = 0; kind < 2; ++kind) {
+      std::vector<int> match, left = have[kind];  // match[i]: key k's loop for want[kind][i]
+      for (int l : want[kind]) {
+        const size_t i = nearest(ref.loops[l].points, key, left);
+        match.push_back(left[i]);
+        left.erase(left.begin() + i);
+      }
+      if (k != ref_) improveAndCheck(k, want[kind], match);
+      for (size_t i = 0; i < match.size(); ++i) {
+        const int l = want[kind][i];
+        used[match[i]] = true;
+        KeyBoundary& kb = out_.keys[k];
+        kb.loops[l] = ArcLengthLoop(key.loops[match[i]].points);
+        const ArcLengthLoop refLoop(ref.loops[l].points);
+        kb.arcStarts[l] = {k == ref_ ? 0.0 : alignedStart(refLoop, kb.loops[l], options_.alignmentSamples)};
+      }
+    }
+  }
+
+  // Index into `among` of key `shape`'s loop nearest to `loop`.
+  static size_t nearest(const Polyline& loop, const KeyShape& shape, const std::vector<int>& among) {
+    size_t best = 0;
+    for (size_t i = 1; i < among.size(); ++i)
+      if (loopDistance(loop, shape.loops[among[i]].points) < loopDistance(loop, shape.loops[among[best]].points)) best = i;
+    return best;
+  }
+
+  // Swaps pairs of the greedy pairing while that is clearly better; a swap about as good as the pairing
+  // (within 5% of the loops' sizes) means the keys do not say which loop becomes which.
+  void improveAndCheck(int k, const std::vector<int>& refLoops, std::vector<int>& match) const {
+    const auto cost = [&](size_t i, int cand) {
+      return loopDistance(shapes_[ref_].loops[refLoops[i]].points, shapes_[k].loops[cand].points);
+    };
+    for (int pass = 0, swapped = 1; swapped && pass < 8; ++pass) {
+      swapped = 0;
+      for (size_t i = 0; i < match.size(); ++i)
+        for (size_t j = i + 1; j < match.size(); ++j) {
+          const double size = std::sqrt(std::abs(loopArea(shapes_[ref_].loops[refLoops[i]].points))) +
+                              std::sqrt(std::abs(loopArea(shapes_[ref_].loops[refLoops[j]].points)));
+          const double gain = cost(i, match[i]) + cost(j, match[j]) - cost(i, match[j]) - cost(j, match[i]);
+          if (gain > 0.05 * size) {
+            std::swap(match[i], match[j]);
+            swapped = 1;
+          } else if (gain > -0.05 * size) {
+            const auto at = [&](int key, int l) { return describeLoop(shapes_[key].loops[l].points); };
+            throw mismatch(keyName(k) + "'s " + at(k, match[i]) + " and " + at(k, match[j]) + " fit " + keyName(ref_) +
+                           "'s " + at(ref_, refLoops[i]) + " and " + at(ref_, refLoops[j]) +
+                           " about as well either way round: place a feature on each of them, in every key, to say "
+                           "which becomes which" + kTopologyDoc);
+          }
+        }
     }
   }
 

@@ -49,10 +49,17 @@ struct SharedBoundary {
 };
 
 // Matches the keys' loops to the reference key's. Every featured loop must carry the same
-// features in the same cyclic order in every key; featureless loops are paired by nearest
-// centroid and size, and started where a rigid alignment of arc-length samples fits best. Throws
-// InputError naming the file, the keys, the loop (by its features) and the features that differ.
+// features in the same cyclic order in every key; featureless loops are paired, pieces with pieces
+// and holes with holes, by nearest centroid and size, and started where a rigid alignment of
+// arc-length samples fits best. Throws InputError naming the file and the keys: for features that
+// differ, which ones and on which piece or hole; for an extra hole or piece in one key, where it is
+// and the cut (split, slit) or drawing fix that makes the topology match; for pairings about as good
+// either way round, that features must say which loop becomes which.
 SharedBoundary matchBoundaries(const Scene& scene, const std::vector<KeyShape>& shapes,
                                const SharedBoundaryOptions& options);
+
+// A loop for messages: its kind, bounding-box centre and area in drawing pixels, e.g.
+// "hole around (64, 64), 1520 px²" (a slit's loop, of zero area, is a "slit").
+std::string describeLoop(const Polyline& loop);
 
 }  // namespace ib

@@ -10,7 +10,9 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 
 namespace ib {
@@ -68,6 +70,17 @@ bool cacheIsCurrent(const Scene& scene, const fs::path& cache) {
   return true;
 }
 
+// A PNG's width and height from its header, or nothing when the file is not a readable PNG.
+std::optional<std::array<int, 2>> pngSize(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  unsigned char head[24] = {};
+  if (!in.read(reinterpret_cast<char*>(head), sizeof head)) return std::nullopt;
+  static const unsigned char kSignature[12] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n', 0, 0, 0, 13};
+  if (!std::equal(kSignature, kSignature + 12, head) || std::string(head + 12, head + 16) != "IHDR") return std::nullopt;
+  const auto word = [&](int at) { return int(head[at]) << 24 | int(head[at + 1]) << 16 | int(head[at + 2]) << 8 | int(head[at + 3]); };
+  return std::array<int, 2>{word(16), word(20)};
+}
+
 SceneMultimesh loaded(Multimesh mesh, MeshSource source, const std::string& file) {
   SceneMultimesh out;
   out.multimesh = std::make_shared<const Multimesh>(std::move(mesh));
@@ -116,6 +129,27 @@ SceneMultimesh build(const Scene& scene, const SceneMultimeshOptions& options, M
 
 }  // namespace
 
+std::vector<std::string> sceneNotes(const Scene& scene) {
+  std::vector<std::string> notes = scene.notes;
+  std::vector<std::array<int, 2>> sizes;
+  for (const KeySpec& key : scene.keys)
+    if (const auto size = pngSize(key.drawing)) sizes.push_back(*size);
+    else return notes;
+  std::array<int, 2> largest{0, 0};
+  std::string each;
+  for (size_t k = 0; k < sizes.size(); ++k) {
+    largest = {std::max(largest[0], sizes[k][0]), std::max(largest[1], sizes[k][1])};
+    if (k < 6) each += (k ? ", " : "") + std::to_string(sizes[k][0]) + "x" + std::to_string(sizes[k][1]) + " for " + inQuotes(scene.keys[k].name);
+  }
+  if (sizes.size() > 6) each += ", ...";
+  if (std::all_of(sizes.begin(), sizes.end(), [&](const std::array<int, 2>& s) { return s == sizes[0]; })) return notes;
+  notes.push_back(fs::path(scene.file).filename().string() + ": keys have different canvas sizes (" + each +
+                  "): positions are drawing pixels from each drawing's top-left, so the drawings line up at their "
+                  "top-left corners; the renderer's canvas is the largest, " + std::to_string(largest[0]) + "x" +
+                  std::to_string(largest[1]) + " (draw every key on the same canvas to place them otherwise)");
+  return notes;
+}
+
 SceneMultimesh sceneMultimesh(const Scene& scene, const SceneMultimeshOptions& options, const PipelineProgress& progress) {
   MonotoneProgress report(progress);
   const int keys = static_cast<int>(scene.keys.size());
@@ -126,7 +160,9 @@ SceneMultimesh sceneMultimesh(const Scene& scene, const SceneMultimeshOptions& o
       throw InputError(options.meshFile + ": has " + std::to_string(mesh.keyCount()) + " keys but " + scene.file +
                        " has " + std::to_string(keys));
     report("multimesh loaded", 1);
-    return loaded(std::move(mesh), MeshSource::kFile, options.meshFile);
+    SceneMultimesh out = loaded(std::move(mesh), MeshSource::kFile, options.meshFile);
+    out.notes = sceneNotes(scene);
+    return out;
   }
   const std::string cache = cachedMeshPath(scene.file);
   if (options.useCache && cacheIsCurrent(scene, cache)) {
@@ -135,12 +171,15 @@ SceneMultimesh sceneMultimesh(const Scene& scene, const SceneMultimeshOptions& o
       Multimesh mesh = loadMultimesh(cache);
       if (mesh.keyCount() == keys) {
         report("multimesh loaded", 1);
-        return loaded(std::move(mesh), MeshSource::kCache, cache);
+        SceneMultimesh out = loaded(std::move(mesh), MeshSource::kCache, cache);
+        out.notes = sceneNotes(scene);
+        return out;
       }
     } catch (const InputError&) {  // a broken cache is rebuilt, not an error
     }
   }
   SceneMultimesh out = build(scene, options, report);
+  out.notes = sceneNotes(scene);
   report("multimesh built", 1);
   return out;
 }

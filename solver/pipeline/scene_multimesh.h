@@ -60,7 +60,16 @@ struct SceneMultimesh {
   std::vector<std::array<int, 2>> drawingSizes;  // [key]: the drawing's width and height, px
   double edgeLength = 0;                         // px: the edge length the build finally used
   std::shared_ptr<const ComeshReport> comesh;    // Comesh Optimization's statistics when it ran
+
+  // What was assumed about odd but accepted input, whatever the source: sceneNotes(scene). Front
+  // ends print them (`inbetween: note: ...`); the library never does.
+  std::vector<std::string> notes;
 };
+
+// The notes for a scene, each naming the scene file: the loader's (Scene::notes, e.g. one key: a
+// still), then keys whose drawings' canvases differ in size (read from the PNG headers; a drawing
+// that cannot be read is left to the error that reading it gives).
+std::vector<std::string> sceneNotes(const Scene& scene);
 
 // stage: what is being done, e.g. "tracing arch"; fraction: of the whole call, in [0, 1],
 // non-decreasing from call to call, 1 on the last call.

@@ -27,8 +27,8 @@ CutKind cutKind(const json& cut, const Context& at) {
   throw at.in("kind").error(inQuotes(kind) + " is not a cut kind (notch, split or slit)");
 }
 
-CutSpec parseCut(const json& j, const Context& key) {
-  const Context first = key.in("cut");
+CutSpec parseCut(const json& j, const Context& key, size_t index) {
+  const Context first = element(j, key, "cut", index);
   requireObject(j, first, {"name", "kind", "points"});
   CutSpec cut;
   cut.name = text(j, "name", first);
@@ -45,10 +45,10 @@ CutSpec parseCut(const json& j, const Context& key) {
   return cut;
 }
 
-KeySpec parseKey(const json& j, const Context& scene, const std::filesystem::path& folder) {
-  requireObject(j, scene.in("key"), {"name", "drawing", "features", "cuts", "holes"});
+KeySpec parseKey(const json& j, const Context& scene, const std::filesystem::path& folder, size_t index) {
+  requireObject(j, element(j, scene, "key", index), {"name", "drawing", "features", "cuts", "holes"});
   KeySpec key;
-  key.name = text(j, "name", scene.in("key"));
+  key.name = text(j, "name", element(j, scene, "key", index));
   const Context at = scene.in("key " + inQuotes(key.name));
   const std::filesystem::path drawing = text(j, "drawing", at);
   key.drawing = (drawing.is_absolute() ? drawing : folder / drawing).lexically_normal().string();
@@ -62,8 +62,8 @@ KeySpec parseKey(const json& j, const Context& scene, const std::filesystem::pat
   }
   if (j.contains("cuts")) {
     if (!j["cuts"].is_array()) throw at.in("cuts").error("must be an array of cuts");
-    for (const json& c : j["cuts"]) {
-      key.cuts.push_back(parseCut(c, at));
+    for (size_t c = 0; c < j["cuts"].size(); ++c) {
+      key.cuts.push_back(parseCut(j["cuts"][c], at, c));
       for (size_t other = 0; other + 1 < key.cuts.size(); ++other)
         if (key.cuts[other].name == key.cuts.back().name)
           throw at.error("cut " + inQuotes(key.cuts.back().name) + " is drawn twice");
@@ -112,6 +112,25 @@ void parseSolver(const json& j, const Context& at, SceneSolverParams& s) {
   s.nonOverlap = boolean(j, "non_overlap", s.nonOverlap, at);
 }
 
+// A plain feature named with a '.', which is reserved for the features cuts create: what the cut
+// named before the dot creates, or that there is no such cut, and what to rename it to.
+InputError dottedFeature(const Context& key, const std::string& f,
+                         const std::map<std::string, std::pair<CutKind, std::vector<int>>>& cuts) {
+  std::string plain = f;
+  std::replace(plain.begin(), plain.end(), '.', '-');
+  const std::string cut = f.substr(0, f.find('.'));
+  const auto it = cuts.find(cut);
+  std::string what = "feature " + inQuotes(f) + ": names with a '.' are reserved for the features cuts create (" +
+                     "CUT.left, CUT.right, CUT.tip for a notch named CUT; see docs/scene-format.md, \"Features and cuts\"), ";
+  if (it == cuts.end())
+    return key.error(what + "and this scene has no cut " + inQuotes(cut) + ": rename it to " + inQuotes(plain) +
+                     " in every key that places it");
+  std::string created;
+  for (const std::string& name : cutFeatureNames(cut, it->second.first)) created += (created.empty() ? "" : ", ") + inQuotes(name);
+  return key.error(what + "and cut " + inQuotes(cut) + " creates " + created + ": use one of those, or if " + inQuotes(f) +
+                   " is a plain feature, rename it to " + inQuotes(plain) + " in every key that places it");
+}
+
 // Every key places the same plain features; a cut's features are placed exactly by the keys where
 // it is open; keys where it is closed draw it with the same kind.
 void checkCorrespondence(const Scene& scene, const Context& at) {
@@ -136,12 +155,7 @@ void checkCorrespondence(const Scene& scene, const Context& at) {
     for (const auto& [f, p] : key.features) {
       if (cutOfFeature.count(f)) continue;
       const size_t dot = f.find('.');
-      if (dot != std::string::npos) {  // reserved for cut features
-        const std::string cut = f.substr(0, dot);
-        throw at.in("key " + inQuotes(key.name))
-            .error("feature " + inQuotes(f) +
-                   (cuts.count(cut) ? " is not one that cut " + inQuotes(cut) + " creates" : " names no cut of this scene"));
-      }
+      if (dot != std::string::npos) throw dottedFeature(at.in("key " + inQuotes(key.name)), f, cuts);
       plain.insert({f, key.name});
     }
   for (const KeySpec& key : scene.keys)
@@ -197,8 +211,8 @@ Scene parseScene(const std::string& source, const std::string& path) {
   if (!j.contains("keys") || !j["keys"].is_array() || j["keys"].empty())
     throw at.in("keys").error("needs at least one key");
   const std::filesystem::path folder = std::filesystem::path(path).parent_path();
-  for (const json& k : j["keys"]) {
-    scene.keys.push_back(parseKey(k, at, folder));
+  for (size_t k = 0; k < j["keys"].size(); ++k) {
+    scene.keys.push_back(parseKey(j["keys"][k], at, folder, k));
     if (scene.keyIndex(scene.keys.back().name) != static_cast<int>(scene.keys.size()) - 1)
       throw at.in("key " + inQuotes(scene.keys.back().name)).error("is named twice");
   }
@@ -215,6 +229,9 @@ Scene parseScene(const std::string& source, const std::string& path) {
   scene.timeline = j.contains("timeline") ? parseTimeline(j["timeline"], names, at.file) : defaultTimeline(names);
   if (j.contains("dynamics")) scene.dynamics = parseDynamics(j["dynamics"], at.in("dynamics"));
   if (j.contains("stiffness")) scene.stiffness = parseStiffness(j["stiffness"], at.in("stiffness"), names, folder.string());
+  if (scene.keys.size() == 1)
+    scene.notes.push_back(at.file + ": one key (" + inQuotes(scene.keys[0].name) +
+                          "): the animation is a still, every frame that key's drawing; add keys to animate");
   return scene;
 }
 

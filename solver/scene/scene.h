@@ -60,6 +60,9 @@ struct Scene {
   Timeline timeline;                // the default timeline (every key, a second apart) when absent
   DynamicsParams dynamics;          // epsilon = 0 (off) when absent
   StiffnessPaint stiffness;         // nothing painted when absent
+  // What the loader assumed about odd but accepted input (e.g. one key: a still), each naming the
+  // file; front ends print them as notes. The library never prints them.
+  std::vector<std::string> notes;
 
   int keyIndex(const std::string& name) const;  // -1 when absent
 };

@@ -21,7 +21,7 @@ StiffnessRegion parseRegion(const json& j, const Context& first, const std::vect
   requireObject(j, first, {"name", "key", "polygon", "kappa"});
   StiffnessRegion region;
   region.name = text(j, "name", first);
-  const Context at = first.in(inQuotes(region.name));
+  const Context& at = first;  // `region "NAME"` (json_fields::element)
   region.key = keyNamed(j, keyNames, at);
   if (!j.contains("polygon") || !j["polygon"].is_array() || j["polygon"].size() < 3)
     throw at.error("needs \"polygon\": at least 3 points [x, y] in the key's drawing pixels");
@@ -71,7 +71,8 @@ StiffnessPaint parseStiffness(const json& j, const Context& at, const std::vecto
   }
   if (j.contains("regions")) {
     if (!j["regions"].is_array()) throw at.in("regions").error("must be an array of regions");
-    for (const json& r : j["regions"]) paint.regions.push_back(parseRegion(r, at.in("region"), keyNames));
+    for (size_t r = 0; r < j["regions"].size(); ++r)
+      paint.regions.push_back(parseRegion(j["regions"][r], element(j["regions"][r], at, "region", r), keyNames));
   }
   return paint;
 }

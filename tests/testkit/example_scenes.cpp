@@ -146,6 +146,10 @@ std::vector<std::pair<std::string, std::string>> writeBadScenes(const std::strin
   std::filesystem::create_directories(dir);
   ib::writeFileAtomically((dir / "corrupt.png").string(), "\x89PNG\r\n\x1a\n this is not a PNG");
   ib::writePng((dir / "empty.png").string(), drawShape(kSize, kSize, [](double, double) { return false; }));
+  // The square with a hole in its middle, the square with a second piece beside it, the square on a wider canvas.
+  ib::writePng((dir / "holed.png").string(), drawShape(kSize, kSize, subtract(square(), box(54, 54, 74, 74))));
+  ib::writePng((dir / "two-pieces.png").string(), drawShape(kSize, kSize, unite(square(), box(106, 8, 122, 24))));
+  ib::writePng((dir / "wide.png").string(), drawShape(kSize + 12, kSize, square()));
   const std::string square = "../square-arch-notch/square.png", archPng = "../square-arch-notch/arch.png";
   const auto scene = [&](const std::string& squareDrawing, const std::string& squareExtra, const std::string& archFeatures) {
     return R"({"version": 1, "reference": "square", "edge_length": 6, "keys": [
@@ -158,6 +162,17 @@ std::vector<std::pair<std::string, std::string>> writeBadScenes(const std::strin
   const auto with = [&](const std::string& field, const std::string& value) {
     nlohmann::json j = nlohmann::json::parse(scene(square, "[64, 64]", archOk));
     j[field] = nlohmann::json::parse(value);
+    return j.dump();
+  };
+  // Two keys without features: the square and `other`.
+  const auto pair = [&](const std::string& other) {
+    return R"({"version": 1, "edge_length": 6, "keys": [{"name": "square", "drawing": ")" + square +
+           R"("}, {"name": "other", "drawing": ")" + other + R"("}]})";
+  };
+  // The good scene with one more field in key `key` (or in its first cut).
+  const auto keyWith = [&](int key, bool inCut, const std::string& field, const std::string& value) {
+    nlohmann::json j = nlohmann::json::parse(scene(square, "[64, 64]", archOk));
+    (inCut ? j["keys"][key]["cuts"][0] : j["keys"][key])[field] = nlohmann::json::parse(value);
     return j.dump();
   };
   const std::vector<std::tuple<std::string, std::string, std::string>> bad = {
@@ -181,6 +196,20 @@ std::vector<std::pair<std::string, std::string>> writeBadScenes(const std::strin
       {"dynamics-out-of-range", with("dynamics", R"({"epsilon": 3})"), "dynamics: epsilon: 3"},
       {"missing-stiffness-image", with("stiffness", R"({"image": {"key": "square", "path": "no-such-stiffness.png"}})"),
        "no-such-stiffness.png"},
+      // The keys' topology differs, a plain feature with a dot, unknown fields inside objects.
+      {"extra-hole", pair("holed.png"), "key \"other\" has a hole that key \"square\" does not"},
+      {"extra-piece", pair("two-pieces.png"), "key \"other\" has a piece that key \"square\" does not"},
+      {"dotted-feature", scene(square, "[64, 64]", archOk + R"(, "a.b": [20, 64])"),
+       "key \"arch\": feature \"a.b\": names with a '.' are reserved"},
+      {"unknown-field-in-key", keyWith(1, false, "colour", "\"red\""), "key \"arch\": unknown field \"colour\""},
+      {"unknown-field-in-cut", keyWith(0, true, "width", "2"), "key \"square\": cut \"split\": unknown field \"width\""},
+      {"unknown-field-in-mark",
+       with("timeline", R"({"marks": [{"time": 0, "key": "square", "easing": "linear"}, {"time": 1, "key": "arch"}]})"),
+       "timeline: mark 1: unknown field \"easing\""},
+      // Odd but accepted (exit code 0 with a note).
+      {"canvas-sizes", pair("wide.png"), "keys have different canvas sizes (128x128 for \"square\", 140x128 for \"other\")"},
+      {"one-key", R"({"version": 1, "edge_length": 6, "keys": [{"name": "square", "drawing": ")" + square + R"("}]})",
+       "one key (\"square\"): the animation is a still"},
   };
   std::vector<std::pair<std::string, std::string>> files;
   for (const auto& [name, text, message] : bad) {

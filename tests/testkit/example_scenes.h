@@ -38,7 +38,9 @@ void writeScene(const ExampleScene& scene, const std::string& folder);
 std::vector<std::string> bundledSceneFiles(const std::string& folder);
 
 // Bad scene files under FOLDER/bad/, each named after its mistake (missing-drawing.json, ...),
-// drawing on FOLDER/square-arch-notch/: returns (file, part of the expected message) pairs.
+// drawing on FOLDER/square-arch-notch/: returns (file, part of the expected message) pairs. Two
+// are odd but build, with a note: canvas-sizes.json (keys on canvases of different sizes) and
+// one-key.json.
 std::vector<std::pair<std::string, std::string>> writeBadScenes(const std::string& folder);
 
 }  // namespace test
