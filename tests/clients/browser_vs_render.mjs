@@ -24,9 +24,12 @@ import { readPng, writePng } from './png.mjs';
 // (docs/export.md "How the export is tested"), with about twice the largest figure as margin. At a
 // key one layer is in play and only rasterization differs (MSAA coverage, texture filtering);
 // between keys the over-compositing of the layers differs from the renderer's weighted sum where
-// the keys' outlines disagree (docs/export.md "Where the two differ").
+// the keys' outlines disagree (docs/export.md "Where the two differ"). Colour p99 at a key is 0.1:
+// on drawings with inner lines (a 512 px fish with outlined stripes) a frame a fraction of a texel
+// off the drawing's grid shows every colour edge 1 px wide up to 0.063 apart, since a client
+// filters the sRGB texture in linear light and the renderer filters the stored values.
 export const TOLERANCE = {
-  key: { alphaMean: 0.005, alphaP99: 0.2, colourMean: 0.003, colourP99: 0.02 },
+  key: { alphaMean: 0.005, alphaP99: 0.2, colourMean: 0.003, colourP99: 0.1 },
   between: { alphaMean: 0.02, alphaP99: 0.4, colourMean: 0.015, colourP99: 0.2 },
 };
 
