@@ -16,9 +16,12 @@
 #include "testkit/example_scenes.h"
 
 #include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
 
 #include <cmath>
+#include <cstring>
+#include <iterator>
 #include <filesystem>
 #include <fstream>
 #include <random>
@@ -232,5 +235,52 @@ TEST_CASE("export: a path that cannot be written is an InputError and leaves no 
   CHECK_THROWS_AS(exportScene(file, {}, (blocked / "out.gltf").string(), 4), InputError);
   CHECK_THROWS_AS(exportScene(file, {}, (dir / "out.png").string(), 4), InputError);
   CHECK(std::distance(fs::directory_iterator(dir), fs::directory_iterator{}) == 1);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("export: a --meshopt .glb names every compressed bufferView's codec and its fallback buffer") {
+  const std::string file = std::string(INBETWEEN_ASSETS) + "/square-arch-notch/scene.json";
+  const fs::path dir = fs::temp_directory_path() / ("inbetween-export-meshopt-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const std::string out = (dir / "notch.glb").string();
+  const Scene scene = loadScene(file);
+  SceneMultimeshOptions meshOptions;
+  meshOptions.useCache = false;
+  meshOptions.comesh = false;
+  const std::shared_ptr<const Multimesh> mesh = sceneMultimesh(scene, meshOptions).multimesh;
+  std::vector<RgbaImage> drawings = readKeyDrawings(scene);
+  ExportedScene exported{"notch", {"square", "arch"}, {drawings[0].width, drawings[0].height}};
+  const render::RenderMesh renderMesh = render::renderMeshOf(*mesh, std::move(drawings));
+  FrameStream stream(*mesh, scene.timeline, interpolationParams(scene.solver), SolverOptions{}, scene.dynamics);
+  GltfExportOptions options;
+  options.meshopt = true;
+  writeGltf(bakeAnimation(stream, renderMesh.cutSides, {0, 8}), renderMesh, exported, options, out);
+  // The JSON chunk: 12-byte header, then its length and type.
+  std::ifstream in(out, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  REQUIRE(bytes.size() > 20);
+  uint32_t jsonLength = 0;
+  std::memcpy(&jsonLength, bytes.data() + 12, 4);
+  const nlohmann::json json = nlohmann::json::parse(bytes.substr(20, jsonLength));
+  REQUIRE(json["buffers"].size() == 2);
+  CHECK(json["buffers"][1]["extensions"]["EXT_meshopt_compression"]["fallback"] == true);
+  CHECK(!json["buffers"][1].contains("uri"));
+  int compressed = 0;
+  for (const nlohmann::json& view : json["bufferViews"]) {
+    if (!view.contains("extensions")) {
+      CHECK(view["buffer"] == 0);  // the images
+      continue;
+    }
+    const nlohmann::json& ext = view["extensions"]["EXT_meshopt_compression"];
+    CHECK(view["buffer"] == 1);
+    CHECK(ext["buffer"] == 0);
+    CHECK(ext["byteStride"].get<int>() * ext["count"].get<int>() == view["byteLength"].get<int>());
+    CHECK((ext["mode"] == "ATTRIBUTES" || ext["mode"] == "TRIANGLES"));
+    ++compressed;
+  }
+  CHECK(compressed >= 4);  // indices, base, a target, UVs, animation
+  const std::vector<std::string> required = json["extensionsRequired"];
+  CHECK(std::count(required.begin(), required.end(), "EXT_meshopt_compression") == 1);
+  CHECK(std::count(required.begin(), required.end(), "KHR_mesh_quantization") == 1);
   fs::remove_all(dir);
 }
