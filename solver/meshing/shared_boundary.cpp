@@ -85,12 +85,11 @@ std::string extraLoops(const std::string& more, const std::string& fewer, bool p
   if (pieces)
     return out + ". If it is part of a piece of key " + inQuotes(fewer) + " that comes apart, draw a \"split\" cut in key " +
            inQuotes(fewer) + " where the pieces separate and place its features in key " + inQuotes(more) +
-           "; if it should not be there, erase it from key " + inQuotes(more) + "'s drawing" + kTopologyDoc;
+           "; if it should not be there, erase it from key " + inQuotes(more) + "'s drawing";
   return out + ". If the hole opens where key " + inQuotes(fewer) + " is solid, draw a \"slit\" cut in key " +
          inQuotes(fewer) + " where it opens and place its features in key " + inQuotes(more) + "; if key " +
          inQuotes(fewer) + " has it open to the outside, draw a \"split\" cut in key " + inQuotes(more) +
-         " from the hole to the outline; if it should not be there, fill it in key " + inQuotes(more) + "'s drawing" +
-         kTopologyDoc;
+         " from the hole to the outline; if it should not be there, fill it in key " + inQuotes(more) + "'s drawing";
 }
 
 // Arc length on `target` where a rigid motion of `source` sampled from its start fits best.
@@ -252,7 +251,7 @@ class Matcher {
         extra += (extra.empty() ? "" : "; and ") + extraLoops(more.key, fewer.key, kind == 0, std::max(want[kind].size(), have[kind].size()),
                                                              fewerLoops.size(), extras);
       }
-    if (!extra.empty()) throw mismatch(extra);
+    if (!extra.empty()) throw mismatch(extra + kTopologyDoc);
     for (int kind = 0; kind < 2; ++kind) {
       std::vector<int> match, left = have[kind];  // match[i]: key k's loop for want[kind][i]
       for (int l : want[kind]) {
