@@ -103,28 +103,6 @@ TEST_CASE("key shape: features and cut ends off the outline, and cuts leaving th
                     Catch::Contains("leaves the shape") && Catch::Contains("(100.0, 50.0)"));
 }
 
-TEST_CASE("shared boundary: a featureless loop traced from another start point is started where it fits") {
-  // The same square in both keys, the second traced from a different corner.
-  Scene scene = sceneWith({KeySpec{"a", "", {}, {}}, KeySpec{"b", "", {}, {}}});
-  KeyShape a{"a", {{squareOutline().outer, std::vector<std::string>(4)}}};
-  Polyline shifted = {{100, 100}, {0, 100}, {0, 0}, {100, 0}};
-  KeyShape b{"b", {{shifted, std::vector<std::string>(4)}}};
-  const SharedBoundary boundary = matchBoundaries(scene, {a, b}, SharedBoundaryOptions{});
-  for (double u : {0.0, 0.1, 0.37, 0.8}) CHECK((boundary.at(0, 0, u) - boundary.at(1, 0, u)).norm() < 1.0);
-}
-
-TEST_CASE("shared boundary: a feature on another loop is reported with the key and both loops' features") {
-  Scene scene = sceneWith({KeySpec{"a", "", {}, {}}, KeySpec{"b", "", {}, {}}});
-  ShapeLoop one{squareOutline().outer, {"p", "q", "", ""}};
-  ShapeLoop first{squareOutline().outer, {"p", "", "", ""}}, second{squareOutline(150).outer, {"q", "", "", ""}};
-  CHECK_THROWS_WITH(matchBoundaries(scene, {KeyShape{"a", {one}}, KeyShape{"b", {first, second}}}, SharedBoundaryOptions{}),
-                    Catch::StartsWith("test.json: outlines do not match: in key \"a\" \"p\" and \"q\" are on one piece "
-                                      "around (50, 50), 10000 px\u00b2") &&
-                        Catch::Contains("but in key \"b\" \"q\" is on a piece around (200, 50), 10000 px\u00b2 (with \"q\")") &&
-                        Catch::Contains("a \"split\" cut in key \"a\" where its piece comes apart") &&
-                        Catch::Contains("if \"q\" is on the wrong outline, move it") && !Catch::Contains("loop"));
-}
-
 namespace {
 
 ShapeLoop plain(Polyline points) { return {points, std::vector<std::string>(points.size())}; }
@@ -147,6 +125,29 @@ std::string mismatchOf(const std::vector<ShapeLoop>& a, const std::vector<ShapeL
 }
 
 }  // namespace
+
+TEST_CASE("shared boundary: a featureless loop traced from another start point is started where it fits") {
+  // The same square in both keys, the second traced from a different corner.
+  Scene scene = twoKeys();
+  KeyShape a{"a", {{squareOutline().outer, std::vector<std::string>(4)}}};
+  Polyline shifted = {{100, 100}, {0, 100}, {0, 0}, {100, 0}};
+  KeyShape b{"b", {{shifted, std::vector<std::string>(4)}}};
+  const SharedBoundary boundary = matchBoundaries(scene, {a, b}, SharedBoundaryOptions{});
+  for (double u : {0.0, 0.1, 0.37, 0.8}) CHECK((boundary.at(0, 0, u) - boundary.at(1, 0, u)).norm() < 1.0);
+}
+
+TEST_CASE("shared boundary: a feature on another loop is reported with the key and both loops' features") {
+  Scene scene = twoKeys();
+  ShapeLoop one{squareOutline().outer, {"p", "q", "", ""}};
+  ShapeLoop first{squareOutline().outer, {"p", "", "", ""}}, second{squareOutline(150).outer, {"q", "", "", ""}};
+  CHECK_THROWS_WITH(matchBoundaries(scene, {KeyShape{"a", {one}}, KeyShape{"b", {first, second}}}, SharedBoundaryOptions{}),
+                    Catch::StartsWith("test.json: outlines do not match: in key \"a\" \"p\" and \"q\" are on one piece "
+                                      "around (50, 50), 10000 px\u00b2") &&
+                        Catch::Contains("but in key \"b\" \"q\" is on a piece around (200, 50), 10000 px\u00b2 (with \"q\")") &&
+                        Catch::Contains("a \"split\" cut in key \"a\" where its piece comes apart") &&
+                        Catch::Contains("if \"q\" is on the wrong outline, move it") && !Catch::Contains("loop"));
+}
+
 
 TEST_CASE("shared boundary: an extra hole names its key, where it is, its area and the cuts that make the topology match") {
   const ShapeLoop square = plain(squareOutline().outer);
