@@ -151,21 +151,40 @@ RgbaImage paperToAlpha(const RgbaImage& image, const PaperMap& paper) {
   for (size_t i = 0; i < n; ++i) shape[i] = !paper.paper[i];
   const std::vector<uint8_t> nearPaper = dilate(paper.paper, w, h, kFringe);
   const std::vector<uint8_t> nearShape = dilate(shape, w, h, 1);
-  // Ink: shape pixels that are not paper-coloured (enclosed paper is kept as it is). Solid ink,
-  // away from the paper, gives the colours that fringe pixels are blends of.
+  // Ink: shape pixels that are not paper-coloured (enclosed paper is kept as it is). Solid ink
+  // gives the colours that fringe pixels are blends of.
   const double inkDistance = 16;  // RGB distance from the paper colour, 0..441
-  std::vector<uint8_t> ink(n), solid(n);
+  // Solid: ink away from the paper and from enclosed paper (whose antialiased rim is a blend too).
+  std::vector<uint8_t> ink(n), enclosed(n), solid(n);
   for (size_t i = 0; i < n; ++i) {
     ink[i] = shape[i] && (rgbAt(image, i) - colour).norm() > inkDistance;
-    solid[i] = ink[i] && !nearPaper[i];
+    enclosed[i] = shape[i] && !ink[i];
   }
+  const std::vector<uint8_t> nearEnclosed = dilate(enclosed, w, h, 1);
+  for (size_t i = 0; i < n; ++i) solid[i] = ink[i] && !nearPaper[i] && !nearEnclosed[i];
+  // An ink pixel nearer to enclosed paper (kept, opaque) than to the paper round the drawing is
+  // blended with the former, as the inner side of a thin outline round a white belly: kept as
+  // drawn, so the background does not show through between the line and the white.
+  auto blendsWithEnclosed = [&](int x, int y) {
+    int toPaper = kFringe + 1, toEnclosed = kFringe + 1;
+    for (int dy = -kFringe; dy <= kFringe; ++dy)
+      for (int dx = -kFringe; dx <= kFringe; ++dx) {
+        const int u = x + dx, v = y + dy;
+        if (u < 0 || u >= w || v < 0 || v >= h) continue;
+        const size_t j = static_cast<size_t>(v) * w + u;
+        const int r = std::max(std::abs(dx), std::abs(dy));
+        if (paper.paper[j]) toPaper = std::min(toPaper, r);
+        else if (enclosed[j]) toEnclosed = std::min(toEnclosed, r);
+      }
+    return toEnclosed < toPaper;
+  };
   RgbaImage out = image;
   out.hasAlpha = true;
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
       const size_t i = static_cast<size_t>(y) * w + x;
       uint8_t* o = out.at(x, y);
-      const bool fringe = (ink[i] && nearPaper[i]) || (paper.paper[i] && nearShape[i]);
+      const bool fringe = (ink[i] && nearPaper[i] && !blendsWithEnclosed(x, y)) || (paper.paper[i] && nearShape[i]);
       if (!fringe) {
         if (paper.paper[i]) o[0] = paper.colour[0], o[1] = paper.colour[1], o[2] = paper.colour[2], o[3] = 0;
         continue;

@@ -40,8 +40,9 @@ struct PaperMap {
 PaperMap findPaper(const RgbaImage& image, const TracingOptions& options, const Polyline& holePoints,
                    const std::string& label);
 
-// The artwork of a drawing on paper, straight alpha: paper transparent; pixels of the shape
-// within 2 px of paper and paper pixels touching the shape un-blended from the paper colour
+// The artwork of a drawing on paper, straight alpha: paper transparent; ink pixels within 2 px
+// of paper (and nearer to it than to enclosed paper, which they are a blend with) and paper
+// pixels touching the shape un-blended from the paper colour
 // (p = a ink + (1 - a) paper, with the ink colour taken from the nearest solid pixel of the
 // shape that explains p, else GIMP's colour-to-alpha), so an antialiased outline becomes partly
 // transparent ink; every other pixel of the shape (enclosed paper included) unchanged. With
