@@ -23,10 +23,10 @@ if(DEFINED NOT_MESSAGE AND err MATCHES "${NOT_MESSAGE}")
 endif()
 # Benchmarks: every stdout line a JSON object of the case's kind with a positive time (and for
 # interp a positive yardstick time).
-if(EXPECTED EQUAL 0 AND "${ARGS}" MATCHES "^bench[|](interp|comesh|anim|render|cut)")
+if(EXPECTED EQUAL 0 AND "${ARGS}" MATCHES "^bench[|](interp|comesh|anim|render|cut|shape)")
   set(case ${CMAKE_MATCH_1})
   set(time_field ms_per_iter)
-  if(case STREQUAL "comesh")
+  if(case STREQUAL "comesh" OR case STREQUAL "shape")
     set(time_field seconds)
   elseif(case STREQUAL "anim" OR case STREQUAL "render" OR case STREQUAL "cut")
     set(time_field ms_per_frame)

@@ -110,6 +110,7 @@ TEST_CASE("scene: every malformed or inconsistent field is an input error naming
       {[](json& j) { j["reference"] = "circle"; }, "reference: must name one of the keys"},
       {[](json& j) { j["solver"]["alpha"] = 1.5; }, "solver: alpha: 1.5 is out of range"},
       {[](json& j) { j["solver"]["tau"] = 0; }, "solver: tau: 0"},
+      {[](json& j) { j["solver"]["metric"] = "harmonic"; }, "solver: metric: \"harmonic\" is not \"shared\""},
       {[](json& j) { j["tracing"]["alpha_threshold"] = 0; }, "tracing: alpha_threshold"},
       {[](json& j) { j["tracing"]["background"] = {255, 255}; }, "tracing: background: must be [r, g, b]"},
       {[](json& j) { j["keys"][1]["name"] = "square"; }, "key \"square\": is named twice"},

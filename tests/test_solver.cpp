@@ -58,6 +58,7 @@ TEST_CASE("solver: the fixed-matrix formulation reaches the paper's per-iteratio
   // matrix and refactorizes every iteration; we keep H fixed and move P into the local step.
   const auto f = test::gluedSquares(6, 1.0, 0.3);
   InterpolationParams p;
+  p.metric = ShapeMetric::kPerKey;  // the paper's energy, as the reference minimizer's
   p.cohesive.alpha = 0.2;
   p.cohesive.tau = 1e9;  // every pair held in both solvers
   SolverOptions o;

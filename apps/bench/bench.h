@@ -44,6 +44,7 @@ Benchmark renderBenchmark();
 Benchmark playBenchmark();
 #endif
 Benchmark cutBenchmark();
+Benchmark shapeBenchmark();
 
 // args: the words after "bench". Returns the exit code; throws InputError on bad arguments.
 int runBench(const std::vector<std::string>& args);

@@ -47,8 +47,8 @@ struct InterpolationParams {
   bool nonOverlap = false;  // enforce W_O (eq. 14); off by default, as in the paper
   // How each triangle's keys are averaged (shape_metric.h): kShared, one metric per triangle
   // blended by the weights (no shrinking or snapping under stretch; a departure from the paper),
-  // or kPerKey, the paper's eq. 9. Default kPerKey.
-  ShapeMetric metric = ShapeMetric::kPerKey;
+  // or kPerKey, the paper's eq. 9. Default kShared (docs/solver.md, "Departures from the paper").
+  ShapeMetric metric = ShapeMetric::kShared;
 };
 
 struct SolverOptions {

@@ -104,12 +104,18 @@ void parseTracing(const json& j, const Context& at, TracingOptions& t) {
 }
 
 void parseSolver(const json& j, const Context& at, SceneSolverParams& s) {
-  requireObject(j, at, {"lambda", "tau", "alpha", "kappa", "non_overlap"});
+  requireObject(j, at, {"lambda", "tau", "alpha", "kappa", "non_overlap", "metric"});
   s.lambda = number(j, "lambda", s.lambda, at, 0, 1e12);
   s.tau = number(j, "tau", s.tau, at, 0, 1e6, true);
   s.alpha = number(j, "alpha", s.alpha, at, 0, 1);
   s.kappa = number(j, "kappa", s.kappa, at, 0, 1e6, true);
   s.nonOverlap = boolean(j, "non_overlap", s.nonOverlap, at);
+  if (j.contains("metric")) {
+    const std::string metric = text(j, "metric", at);
+    if (metric == "shared") s.metric = ShapeMetric::kShared;
+    else if (metric == "per_key") s.metric = ShapeMetric::kPerKey;
+    else throw at.in("metric").error("\"" + metric + "\" is not \"shared\" (one metric per triangle, no shrinking) or \"per_key\" (the paper's eq. 9)");
+  }
 }
 
 // A plain feature named with a '.', which is reserved for the features cuts create: what the cut
@@ -241,6 +247,7 @@ InterpolationParams interpolationParams(const SceneSolverParams& solver) {
   p.cohesive.tau = solver.tau;
   p.cohesive.alpha = solver.alpha;
   p.nonOverlap = solver.nonOverlap;
+  p.metric = solver.metric;
   return p;
 }
 

@@ -6,6 +6,7 @@
 
 #include "animation/dynamics.h"
 #include "animation/timeline.h"
+#include "interpolation/shape_metric.h"
 #include "meshing/stiffness_paint.h"
 #include "meshing/tracing.h"
 
@@ -48,6 +49,9 @@ struct SceneSolverParams {
   double alpha = 0.5;       // shear (0) versus stretch (1) resistance of cohesive pairs (eq. 13)
   double kappa = 1;         // stiffness of every unpainted triangle (see "stiffness")
   bool nonOverlap = false;  // W_O on or off
+  // How each triangle's keys are averaged (interpolation/shape_metric.h): "metric" in the scene,
+  // "shared" (default) or "per_key" (the paper's eq. 9).
+  ShapeMetric metric = ShapeMetric::kShared;
 };
 
 struct Scene {

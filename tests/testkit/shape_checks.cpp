@@ -57,4 +57,24 @@ double arapDistortion(const ib::Multimesh& mesh, const Eigen::MatrixX2d& x, cons
   return total;
 }
 
+double sharedMetricDistortion(const ib::Multimesh& mesh, const Eigen::MatrixX2d& x, const Eigen::VectorXd& w, int triangle) {
+  const ib::Triangle t = mesh.triangles()[triangle];
+  const Eigen::Matrix2d D = ib::edgeMatrix(x, t);
+  Eigen::Matrix2d M = Eigen::Matrix2d::Zero();
+  double area = 0;
+  for (int i = 0; i < mesh.keyCount(); ++i) {
+    const Eigen::Matrix2d Di = ib::edgeMatrix(mesh.keyPositions(i), t);
+    const Eigen::Matrix2d B = Di.inverse();
+    M += w(i) * 0.5 * Di.determinant() * B * B.transpose();
+    area += w(i) * 0.5 * Di.determinant();
+  }
+  Eigen::Matrix2d target = Eigen::Matrix2d::Zero();  // D* = sum_i w_i R_i D_i
+  for (int i = 0; i < mesh.keyCount(); ++i) {
+    const Eigen::Matrix2d Di = ib::edgeMatrix(mesh.keyPositions(i), t);
+    target += w(i) * ib::closestRotation(Eigen::Matrix2d(D * M * Di.transpose())) * Di;
+  }
+  const Eigen::Matrix2d E = D - target;
+  return (E * M * E.transpose()).trace() / area;
+}
+
 }  // namespace test

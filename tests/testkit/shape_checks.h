@@ -26,4 +26,11 @@ double distanceToBoundary(const std::vector<std::array<int, 2>>& edges, const Ei
 // F_i = D(x) D(X_i)^{-1} and R_i its closest rotation; unweighted by kappa and area.
 double arapDistortion(const ib::Multimesh& mesh, const Eigen::MatrixX2d& x, const Eigen::VectorXd& w, int triangle);
 
+// The part of the shared metric's energy (interpolation/shape_metric.h) that the mesh leaves a
+// triangle: with M = sum_i w_i a_i B_i B_i^T (a_i its area in key i, B_i its inverse edge matrix
+// there), R_i the rotation closest to D M D_i^T and D* = sum_i w_i R_i D_i the blend of its
+// rotated key triangles, tr((D - D*) M (D - D*)^T) / sum_i w_i a_i: zero where the triangle is
+// its blend (the rest of its energy, the keys' spread about D*, no placement can change).
+double sharedMetricDistortion(const ib::Multimesh& mesh, const Eigen::MatrixX2d& x, const Eigen::VectorXd& w, int triangle);
+
 }  // namespace test
