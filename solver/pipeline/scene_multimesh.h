@@ -61,8 +61,10 @@ struct SceneMultimesh {
   double edgeLength = 0;                         // px: the edge length the build finally used
   std::shared_ptr<const ComeshReport> comesh;    // Comesh Optimization's statistics when it ran
 
-  // What was assumed about odd but accepted input, whatever the source: sceneNotes(scene). Front
-  // ends print them (`inbetween: note: ...`); the library never does.
+  // What was assumed about odd but accepted input, whatever the source: sceneNotes(scene); and,
+  // when Comesh ran here, each key or map it left worse than the initial map (a smallest angle
+  // lower, a larger share under 20 degrees, a MIPS maximum higher). Front ends print them
+  // (`inbetween: note: ...`); the library never does.
   std::vector<std::string> notes;
 };
 
