@@ -258,3 +258,38 @@ TEST_CASE("interpolation: under the shared metric a strip stretched 4x is 2.5x l
   // Even speed: under the shared metric the length grows linearly in w.
   for (double w1 : {0.1, 0.25, 0.75, 0.9}) CHECK(length(ShapeMetric::kShared, w1) == Approx(1 + 3 * w1).epsilon(1e-3));
 }
+
+TEST_CASE("interpolation: a frame slow under an H of other weights refactorizes H at its own, once") {
+  // A strip and the same strip stretched 8x, thinned 4x and bent, in the paper's metric: the keys'
+  // metrics differ so much that H factorized at w = e_0 is a poor model at w = (0.3, 0.7).
+  // refactorDistance 2 keeps the stale H by the distance rule; slowFrameIterations decides.
+  const GridMesh g = rectangleGrid(41, 9, 8.0, 1.0);
+  Multimesh mesh(static_cast<int>(g.points.rows()), g.triangles);
+  mesh.addKey(g.points, {}, g.boundary);
+  Eigen::MatrixX2d stretched = g.points;
+  stretched.col(0) *= 8.0;
+  stretched.col(1) *= 0.25;
+  mesh.addKey(bendStrip(stretched, 1.5 * M_PI), {}, g.boundary);
+  const auto iterations = [&](int slow, int& factorizations) {
+    SolverOptions options;
+    options.refactorDistance = 2;
+    options.slowFrameIterations = slow;
+    options.maxIterations = 5000;
+    InterpolationParams params;
+    params.metric = ShapeMetric::kPerKey;
+    Interpolator solver(mesh, params, options);
+    solver.solve(Eigen::Vector2d(1, 0));
+    const InterpolationResult r = solver.solve(Eigen::Vector2d(0.3, 0.7));
+    REQUIRE(r.converged);
+    factorizations = r.factorizations;
+    return r.iterations;
+  };
+  int staleFactorizations = 0, refreshedFactorizations = 0;
+  const int stale = iterations(0, staleFactorizations);
+  const int refreshed = iterations(40, refreshedFactorizations);
+  INFO("stale H: " << stale << " iterations, refreshed at 40: " << refreshed);
+  REQUIRE(stale > 40);  // the case is slow under the stale H
+  CHECK(staleFactorizations == 0);
+  CHECK(refreshedFactorizations == 1);
+  CHECK(refreshed < stale);
+}

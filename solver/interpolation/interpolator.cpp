@@ -35,6 +35,7 @@ const SolverOptions& validOptions(const InterpolationParams& p, const SolverOpti
           "must be in [0, " + std::to_string(AndersonAcceleration::kMaxDepth) + "]");
   require(o.refactorDistance >= 0 && std::isfinite(o.refactorDistance), "refactorDistance", "must be >= 0");
   require(o.staleHeldIterations >= 1, "staleHeldIterations", "must be >= 1");
+  require(o.slowFrameIterations >= 0, "slowFrameIterations", "must be >= 0 (0 = never)");
   require(o.placementStiffness > 0 && std::isfinite(o.placementStiffness), "placementStiffness", "must be > 0");
   require(o.nonOverlapStiffness > 0 && std::isfinite(o.nonOverlapStiffness), "nonOverlapStiffness", "must be > 0");
   require(o.threads >= 0, "threads", "must be >= 0 (0 = all cores)");
@@ -358,6 +359,11 @@ InterpolationResult Interpolator::Impl::solve(const Eigen::VectorXd& w, const Ei
       staleIterations = 0;
     }
     ++result.iterations;
+    // A slow frame under an H of other weights: H at this frame's weights, once.
+    if (result.iterations == options_.slowFrameIterations && !global_->models({frame.w, frame.springs, s.held}, 0.0)) {
+      refactorize(frame.w, frame.springs, s.held, result);
+      anderson_.reset();
+    }
     result.energyHistory.push_back(s.energy);
     norm = gradientNorm(s.gradient);
     result.residualHistory.push_back(relative(norm));

@@ -60,6 +60,11 @@ struct SolverOptions {
   // more on the scenes; 32 was no better.
   int andersonDepth = 16;
   double refactorDistance = 1.0;    // refactorize H when |w - w_H|_1 exceeds this; 0 = exact H every frame
+  // A frame still unconverged after this many iterations with H factorized at other weights gets H
+  // refactorized at its own, once: where the keys' metrics differ a lot (a tail flicking up and
+  // down, drawn at 512 px) an H of w half a segment away made single frames take 600-2500
+  // iterations, against 10-80 with the exact H. 0: never. Default 40.
+  int slowFrameIterations = 40;
   // Where updating H's factor for changed held pairs would cost more than a
   // factorization (small meshes, or many pairs changing at once): refactorize H after this many
   // iterations in a row in which the held pairs differ from H's (a step that fails meanwhile
