@@ -9,6 +9,7 @@
 #include "interpolation/interpolator.h"
 #include "multimesh/multimesh.h"
 #include "output/render_mesh.h"
+#include "pipeline/artwork_sampling.h"
 #include "pipeline/key_drawings.h"
 #include "pipeline/scene_multimesh.h"
 #include "progress.h"
@@ -43,7 +44,8 @@ constexpr const char* kUsage =
     "  --meshopt            meshopt-compressed buffers (EXT_meshopt_compression, then required;\n"
     "                       implies --quantize): three.js needs GLTFLoader.setMeshoptDecoder\n"
     "  --pixels-per-unit P  drawing pixels per glTF unit (metre); default 100\n"
-    "  --sampling S         texture filtering: linear (default) or nearest (pixel art)\n"
+    "  --sampling S         texture filtering: linear or nearest (pixel art); default the scene's\n"
+    "                       \"sampling\" (auto: nearest when every drawing is pixel art, else linear)\n"
     "  --mesh FILE          multimesh to use (default: SCENE's .ibmesh from `inbetween mesh` when\n"
     "                       newer than the scene and drawings, else built now)\n"
     "  --no-comesh          when building the multimesh, skip Comesh Optimization\n"
@@ -78,9 +80,13 @@ int runExport(const std::vector<std::string>& rawArgs) {
     options.pixelsPerUnit = cli::positiveNumber(arguments.value("pixels-per-unit", ""), "--pixels-per-unit", 1e6, "a scale");
   options.quantize = arguments.flag("quantize");
   options.meshopt = arguments.flag("meshopt");
-  const std::string sampling = arguments.value("sampling", "linear");
-  if (sampling == "nearest") options.sampling = render::Sampling::kNearest;
-  else if (sampling != "linear") throw InputError("--sampling: '" + sampling + "' is not linear or nearest");
+  std::optional<render::Sampling> sampling;  // default: the scene's "sampling", once its drawings are read
+  if (arguments.has("sampling")) {
+    const std::string text = arguments.value("sampling", "");
+    if (text == "nearest") sampling = render::Sampling::kNearest;
+    else if (text == "linear") sampling = render::Sampling::kLinear;
+    else throw InputError("--sampling: '" + text + "' is not linear or nearest");
+  }
   SceneMultimeshOptions meshOptions;
   meshOptions.meshFile = arguments.value("mesh", "");
   meshOptions.comesh = !arguments.flag("no-comesh");
@@ -91,6 +97,7 @@ int runExport(const std::vector<std::string>& rawArgs) {
   const Scene scene = loadScene(scenePath);
   for (const std::string& note : sceneNotes(scene)) std::fprintf(stderr, "inbetween: note: %s\n", note.c_str());
   std::vector<RgbaImage> drawings = readKeyDrawings(scene);
+  options.sampling = sampling.value_or(nearestSampling(scene, drawings) ? render::Sampling::kNearest : render::Sampling::kLinear);
   Timeline timeline = scene.timeline;
   if (arguments.has("fps"))
     timeline = Timeline(cli::positiveNumber(arguments.value("fps", ""), "--fps", 1000, "a frame rate"), timeline.loops(),
@@ -117,7 +124,7 @@ int runExport(const std::vector<std::string>& rawArgs) {
     throw InputError("export: " + std::to_string(range[1] - range[0] + 1) + " frames of " + std::to_string(played->vertexCount()) +
                      " vertices would be " + std::to_string(static_cast<long long>(targetBytes / (1 << 20))) +
                      " MiB of morph targets, more than a glTF file holds: export fewer frames (--frames) or mesh coarser "
-                     "(a larger edgeLength in " + scene.file + ")");
+                     "(a larger \"edge_length\" in " + scene.file + ")");
   gltf::ExportedScene exported;
   exported.name = fs::path(scene.file).parent_path().filename().string();
   if (exported.name.empty() || exported.name == "." || exported.name == "..") exported.name = fs::path(scene.file).stem().string();

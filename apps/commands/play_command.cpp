@@ -34,6 +34,8 @@ constexpr const char* kUsage =
     "  --weights K=W,...   weights mode at these weights (K a key's name or index; others 0; normalized)\n"
     "  --size WxH          window size in pixels (default 1280x720)\n"
     "  --samples N         multisample anti-aliasing samples (default 2)\n"
+    "  --sampling S        the drawings' filtering at the start: linear or nearest (pixel art);\n"
+    "                      default the scene's \"sampling\" (auto: nearest for pixel art)\n"
     "  --no-vsync          present as fast as possible (mailbox or immediate)\n"
     "  --device D          any (default: a GPU if present, else lavapipe), gpu or cpu\n"
     "  --validation        run with the Khronos validation layer; any message is an error\n"
@@ -129,7 +131,7 @@ void runScripted(play::PlayerSession& session, play::PlayerWindow& window, int f
 int runPlay(const std::vector<std::string>& rawArgs) {
   if (cli::printHelpIfAsked(rawArgs, kUsage)) return 0;
   const SplitArguments split = splitSets(rawArgs);
-  const cli::Arguments arguments("play", split.rest, {"frames", "screenshot", "weights", "size", "samples", "device", "threads"},
+  const cli::Arguments arguments("play", split.rest, {"frames", "screenshot", "weights", "size", "samples", "sampling", "device", "threads"},
                                  {"validation", "no-vsync"});
   if (arguments.positional().size() != 1) throw InputError("play: needs exactly one SCENE file (see `inbetween play --help`)");
   const std::string scenePath = arguments.positional()[0];
@@ -144,6 +146,7 @@ int runPlay(const std::vector<std::string>& rawArgs) {
   }
   windowOptions.samples = arguments.integer("samples", windowOptions.samples, 1, 64);
   windowOptions.vsync = !arguments.flag("no-vsync");
+  windowOptions.sampling = parseSampling(arguments);
   windowOptions.validation = arguments.flag("validation");
   const std::string device = arguments.value("device", "any");
   if (device == "any") windowOptions.device = vk::DevicePreference::kAny;

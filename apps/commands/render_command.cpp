@@ -38,8 +38,9 @@ constexpr const char* kUsage =
     "  --fps N              frame rate; default the scene's timeline's (24 without one)\n"
     "  --background C       transparent (default), or a colour RRGGBB / RRGGBBAA\n"
     "  --samples N          multisample anti-aliasing samples (default 4)\n"
-    "  --sampling S         how the drawings' texels are filtered: linear (default, trilinear) or\n"
-    "                       nearest (magnified pixel art stays crisp)\n"
+    "  --sampling S         how the drawings' texels are filtered: linear (trilinear) or nearest\n"
+    "                       (magnified pixel art stays crisp); default the scene's \"sampling\"\n"
+    "                       (auto: nearest when every drawing is pixel art, else linear)\n"
     "  --wireframe          draw the mesh's edges\n"
     "  --cohesive           draw the cohesive edges of the keys in play, red\n"
     "  --features           draw the feature vertices, blue\n"
@@ -84,6 +85,7 @@ int runRender(const std::vector<std::string>& rawArgs) {
   RenderOptions options = parseRenderOptions(arguments);
   const Scene scene = loadScene(scenePath);
   std::vector<RgbaImage> drawings = readKeyDrawings(scene);
+  const render::Sampling sampling = sceneSampling(options.sampling, scene, drawings);  // before the drawings move
   const Timeline timeline = options.fps ? withFps(scene.timeline, *options.fps) : scene.timeline;
   const int frameCount = timeline.frameCount();
   const std::array<int, 2> range = options.frames.value_or(std::array<int, 2>{0, frameCount - 1});
@@ -146,7 +148,7 @@ int runRender(const std::vector<std::string>& rawArgs) {
   auto draw = [&](const std::deque<AnimationFrame>& window, size_t at) {
     const AnimationFrame& frame = window[at];
     render::FrameDraw request = render::frameWithOnionSkins(window, at, onion, view, options.overlays);
-    request.sampling = options.sampling;
+    request.sampling = sampling;
     renderer.submit(request);
     inFlight.push_back(frame.index);
     while (static_cast<int>(inFlight.size()) > 2) collect();

@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 #include "gpu/vulkan_check.h"
+#include "pipeline/artwork_sampling.h"
 
 #include <algorithm>
 #include <cctype>
@@ -49,6 +50,20 @@ std::array<float, 4> parseBackground(const std::string& text, const std::string&
   return colour;
 }
 
+std::optional<render::Sampling> parseSampling(const cli::Arguments& a, const std::string& option) {
+  if (!a.has("sampling")) return std::nullopt;
+  const std::string sampling = a.value("sampling", "");
+  if (sampling == "linear") return render::Sampling::kLinear;
+  if (sampling == "nearest") return render::Sampling::kNearest;
+  throw InputError(option + ": '" + sampling + "' is not linear or nearest");
+}
+
+render::Sampling sceneSampling(const std::optional<render::Sampling>& option, const Scene& scene,
+                               const std::vector<RgbaImage>& drawings) {
+  if (option) return *option;
+  return nearestSampling(scene, drawings) ? render::Sampling::kNearest : render::Sampling::kLinear;
+}
+
 RenderOptions parseRenderOptions(const cli::Arguments& a) {
   RenderOptions o;
   if (!a.has("output")) throw InputError("render: needs -o DIR, the folder for the frames");
@@ -61,10 +76,7 @@ RenderOptions parseRenderOptions(const cli::Arguments& a) {
   o.overlays.wireframe = a.flag("wireframe");
   o.overlays.cohesive = a.flag("cohesive");
   o.overlays.features = a.flag("features");
-  const std::string sampling = a.value("sampling", "linear");
-  if (sampling == "linear") o.sampling = render::Sampling::kLinear;
-  else if (sampling == "nearest") o.sampling = render::Sampling::kNearest;
-  else throw InputError("--sampling: '" + sampling + "' is not linear or nearest");
+  o.sampling = parseSampling(a);
   o.onion = a.integer("onion", 0, 0, render::kMaxOnionSkins / 2);
   o.sheetEvery = a.integer("sheet-every", 0, 0, 100000);
   o.mesh.meshFile = a.value("mesh", "");

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "cli.h"
+#include "core/png_image.h"
 #include "gpu/vulkan_context.h"
 #include "pipeline/scene_multimesh.h"
 #include "renderers/offscreen_renderer.h"
@@ -10,6 +11,7 @@
 #include <array>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace ib {
 
@@ -20,7 +22,8 @@ struct RenderOptions {
   std::optional<double> fps;           // --fps N; default the scene's timeline's
   render::OffscreenOptions target;     // --samples, --background (size filled in later)
   render::Overlays overlays;           // --wireframe, --cohesive, --features
-  render::Sampling sampling = render::Sampling::kLinear;  // --sampling linear|nearest
+  // --sampling linear|nearest; default none: the scene's "sampling" (sceneSampling)
+  std::optional<render::Sampling> sampling;
   int onion = 0;                       // --onion N: neighbouring frames each side, 0..2
   int sheetEvery = 0;                  // --sheet-every K: every k-th frame on the sheet; 0 = at most 36 tiles
   SceneMultimeshOptions mesh;          // --mesh FILE, --no-comesh
@@ -35,6 +38,13 @@ RenderOptions parseRenderOptions(const cli::Arguments& arguments);
 // The Vulkan context for `command`. A missing or broken driver is an InputError (exit 2) that says
 // what failed and what to install: the machine is at fault, not inbetween.
 vk::VulkanContext openVulkan(const vk::ContextOptions& options, const std::string& command);
+
+// --sampling linear|nearest when given; `option` names it in errors.
+std::optional<render::Sampling> parseSampling(const cli::Arguments& arguments, const std::string& option = "--sampling");
+// The drawings' filtering: the command line's when given, else the scene's "sampling"
+// (pipeline/artwork_sampling.h; auto = nearest for pixel art). `drawings` as readKeyDrawings.
+render::Sampling sceneSampling(const std::optional<render::Sampling>& option, const Scene& scene,
+                               const std::vector<RgbaImage>& drawings);
 
 // "WxH" with both in [1, 16384]; `option` names it in errors.
 std::array<int, 2> parseSize(const std::string& text, const std::string& option);

@@ -1,6 +1,7 @@
 #include "player/player_window.h"
 
 #include "core/error.h"
+#include "pipeline/artwork_sampling.h"
 #include "player/shortcuts.h"
 #include "gpu/vulkan_check.h"
 
@@ -39,6 +40,15 @@ PlayerWindow::PlayerWindow(PlayerSession& session, const PlayerWindowOptions& op
   imgui_ = std::make_unique<ImGuiLayer>(*presenter_, this);
   glfwSetDropCallback(presenter_->window().get(), &onDrop);
   last_ = std::chrono::steady_clock::now();
+  samplingOverride_ = options.sampling;
+  applySceneSampling(true);
+}
+
+void PlayerWindow::applySceneSampling(bool force) {
+  const bool nearest = nearestSampling(session_.scene().scene, session_.scene().drawings);
+  if (!force && nearest == sceneNearest_) return;
+  sceneNearest_ = nearest;
+  ui_.view.sampling = samplingOverride_.value_or(nearest ? render::Sampling::kNearest : render::Sampling::kLinear);
 }
 
 PlayerWindow::~PlayerWindow() {
@@ -109,6 +119,7 @@ bool PlayerWindow::frame(RgbaImage* capture) {
   dropped_.clear();
   if (session_.update(seconds)) {
     presenter_->setMesh(session_.renderMesh());
+    applySceneSampling(false);
     presenter_->window().setTitle("inbetween play - " + session_.scenePath());
   }
 

@@ -11,6 +11,7 @@
 
 #include <chrono>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,9 @@ struct PlayerWindowOptions {
   int samples = 2;
   bool validation = false;         // Khronos validation layer; messages via context()
   vk::DevicePreference device = vk::DevicePreference::kAny;
+  // The artwork's filtering at the start and after every reload (the View panel can change it):
+  // this when given (--sampling), else the scene's "sampling" (pipeline/artwork_sampling.h).
+  std::optional<render::Sampling> sampling;
 };
 
 class PlayerWindow {
@@ -51,6 +55,9 @@ class PlayerWindow {
   void panels();  // every panel, once per UI frame
   render::ViewBox contentBox() const;  // the drawings' canvas, drawing pixels
   void writeScreenshot(const RgbaImage& image);
+  // The View panel's sampling from the override or the scene, when the scene's choice is new (a
+  // reload that keeps it keeps what the user set in the panel).
+  void applySceneSampling(bool force);
 
   PlayerSession& session_;
   std::unique_ptr<render::WindowPresenter> presenter_;
@@ -60,6 +67,8 @@ class PlayerWindow {
   std::vector<std::string> dropped_;
   bool laidOut_ = false;  // the first frame's layout passes are done
   int laidOutFrames_ = 0;  // frames presented or skipped so far
+  std::optional<render::Sampling> samplingOverride_;  // PlayerWindowOptions::sampling
+  bool sceneNearest_ = false;                        // the scene's sampling last applied: nearest
 };
 
 }  // namespace ib::play

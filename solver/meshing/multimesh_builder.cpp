@@ -3,6 +3,7 @@
 #include "core/error.h"
 #include "core/plane_geometry.h"
 #include "core/png_image.h"
+#include "meshing/mesh_size.h"
 #include "meshing/shared_boundary.h"
 #include "meshing/stiffness_paint.h"
 
@@ -151,7 +152,13 @@ Attempt mapKeys(const Scene& scene, const SharedBoundary& boundary, const Refere
     placeBoundary(boundary, mesh, k, x);
     if (k != scene.reference) tutteInterior(mesh, x);
     if (k != scene.reference || smallestTriangleArea(mesh.triangles, x).first <= 0) {
-      const UntangleResult r = untangle(mesh.triangles, rest, x, locked, options.untangle);
+      UntangleOptions untangleOptions = options.untangle;  // progress within the key: minutes at 100k vertices
+      if (options.progress)
+        untangleOptions.progress = [&](int done, int most) {
+          options.progress("mapping key " + scene.keys[k].name + " (untangling, step " + std::to_string(done) + ")",
+                           (k + static_cast<double>(done) / most) / m);
+        };
+      const UntangleResult r = untangle(mesh.triangles, rest, x, locked, untangleOptions);
       if (!r.injective) {
         const Triangle& t = mesh.triangles[r.worstTriangle];
         out.failedKey = k;
@@ -190,12 +197,16 @@ BuiltScene buildMultimesh(const Scene& scene, const MultimeshBuildOptions& optio
     built.shapes.push_back(buildKeyShape(scene, k, built.outlines.back(), options.shape));
   }
   const std::string file = std::filesystem::path(scene.file).filename().string();
-  double edgeLength = scene.edgeLength;
+  // The scene's edge length or the default that follows the drawings; refused past max_vertices
+  // before any meshing (meshing/mesh_size.h).
+  double edgeLength = meshEdgeLength(scene, built.outlines);
   for (int attempt = 0;; ++attempt) {
     SharedBoundaryOptions bo;
     bo.edgeLength = edgeLength;
     const SharedBoundary boundary = matchBoundaries(scene, built.shapes, bo);
-    if (options.progress) options.progress("meshing " + scene.keys[scene.reference].name, 0);
+    if (options.progress)
+      options.progress("meshing " + scene.keys[scene.reference].name + " (" +
+                       estimatedSize(built.outlines[scene.reference], edgeLength) + ")", 0);
     ConformingMeshOptions mo;
     mo.maxEdgeLength = edgeLength;
     ReferenceMesh mesh;
@@ -214,11 +225,12 @@ BuiltScene buildMultimesh(const Scene& scene, const MultimeshBuildOptions& optio
       built.multimesh->validate();
       return built;
     }
-    if (attempt >= options.refinements)
+    const bool finerFits = withinMeshLimit(scene, built.outlines[scene.reference], edgeLength / 1.5);
+    if (attempt >= options.refinements || !finerFits)
       throw InputError(file + ": key " + inQuotes(scene.keys[result.failedKey].name) +
                        ": cannot map the mesh onto this key without folding triangles near " + formatPoint(result.failedAt) +
                        " (tried edge lengths down to " + formatLength(edgeLength) +
-                       " px); check that its features and cuts match the other keys there");
+                       " px" + (finerFits ? "" : ": a finer one would pass max_vertices") + "); check that its features and cuts match the other keys there");
     edgeLength /= 1.5;
   }
 }

@@ -189,6 +189,7 @@ UntangleResult untangle(const std::vector<Triangle>& triangles, const Eigen::Mat
     const double mu = (1 - sigma) * energy.chi(minDet);
     energy.setEps(minDet < mu ? 2 * std::sqrt(mu * (mu - minDet)) : 1e-10);
     value = energy.evaluate(x, gradient, minDet);
+    if (options.progress) options.progress(outer + 1, options.outerIterations);
     if (minDet > 0 && std::abs(previous - value) <= options.energyTolerance * std::abs(value)) break;
   }
   for (int v = 0; v < n; ++v)

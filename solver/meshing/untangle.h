@@ -8,6 +8,7 @@
 #include "multimesh/multimesh.h"
 
 #include <Eigen/Core>
+#include <functional>
 #include <vector>
 
 namespace ib {
@@ -18,6 +19,9 @@ struct UntangleOptions {
   int innerIterations = 300;    // L-BFGS iterations per eps at most. Default 300.
   int memory = 7;               // L-BFGS history length. Default 7.
   double energyTolerance = 1e-3;  // stop once untangled and the energy changes by less than this, relatively. Default 1e-3.
+  // Called after every eps update with the outer iterations done and outerIterations, for
+  // progress display (a key of 100k vertices takes minutes). Optional.
+  std::function<void(int done, int most)> progress;
 };
 
 struct UntangleResult {

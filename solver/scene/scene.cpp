@@ -209,7 +209,8 @@ Scene parseScene(const std::string& source, const std::string& path) {
     throw at.error(std::string("malformed JSON: ") + e.what());
   }
   requireObject(j, at,
-                {"version", "reference", "edge_length", "tracing", "solver", "keys", "timeline", "dynamics", "stiffness"});
+                {"version", "reference", "edge_length", "max_vertices", "sampling", "tracing", "solver", "keys", "timeline",
+                 "dynamics", "stiffness"});
   if (!j.contains("version") || !j["version"].is_number_integer() || j["version"].get<int>() != 1)
     throw at.in("version").error("must be 1 (the only scene format version so far)");
   Scene scene;
@@ -226,7 +227,16 @@ Scene parseScene(const std::string& source, const std::string& path) {
     scene.reference = j["reference"].is_string() ? scene.keyIndex(j["reference"].get<std::string>()) : -1;
     if (scene.reference < 0) throw at.in("reference").error("must name one of the keys");
   }
-  scene.edgeLength = number(j, "edge_length", scene.edgeLength, at, 0.5, 1e6);
+  if (j.contains("edge_length")) scene.edgeLength = number(j, "edge_length", scene.edgeLength, at, 0.5, 1e6);
+  scene.maxVertices = static_cast<int>(number(j, "max_vertices", scene.maxVertices, at, 100, 1e9));
+  if (j.contains("sampling")) {
+    const std::string sampling = text(j, "sampling", at);
+    if (sampling == "auto") scene.sampling = ArtworkSampling::kAuto;
+    else if (sampling == "linear") scene.sampling = ArtworkSampling::kLinear;
+    else if (sampling == "nearest") scene.sampling = ArtworkSampling::kNearest;
+    else throw at.in("sampling").error(inQuotes(sampling) + " is not \"linear\" (smooth, for drawn art), \"nearest\" (hard "
+                                       "pixel edges, for pixel art) or \"auto\" (nearest when every drawing is pixel art)");
+  }
   if (j.contains("tracing")) parseTracing(j["tracing"], at.in("tracing"), scene.tracing);
   if (j.contains("solver")) parseSolver(j["solver"], at.in("solver"), scene.solver);
   checkCorrespondence(scene, at);

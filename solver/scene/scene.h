@@ -54,11 +54,23 @@ struct SceneSolverParams {
   ShapeMetric metric = ShapeMetric::kShared;
 };
 
+// How render, play and export filter the key drawings' texels, "sampling" in the scene: kLinear
+// (trilinear, smooth line art), kNearest (magnified pixel art keeps hard pixel edges), or kAuto,
+// nearest when every drawing is pixel art (pipeline/artwork_sampling.h). Default kAuto.
+enum class ArtworkSampling { kAuto, kLinear, kNearest };
+
 struct Scene {
   std::string file;                 // the scene file, as named in messages
   std::vector<KeySpec> keys;        // in file order; the cyclic order of the keys
   int reference = 0;                // index of the key that is triangulated
-  double edgeLength = 8;            // px: target boundary edge length in the reference key
+  // px: target edge length, "edge_length"; 0 (absent) follows the drawings' size
+  // (meshing/mesh_size.h: sqrt(mean key area) / 16, in [1, 8] px). Default 0.
+  double edgeLength = 0;
+  // The size guard, "max_vertices": a build whose estimated vertex count exceeds it is refused
+  // before meshing (meshing/mesh_size.h). Default 200,000: on the 2-core VM the initial map of
+  // two keys takes minutes and about 200 MB, Comesh several more (docs/drawings-to-multimesh.md).
+  int maxVertices = 200000;
+  ArtworkSampling sampling = ArtworkSampling::kAuto;  // "sampling": how front ends filter the drawings
   TracingOptions tracing;
   SceneSolverParams solver;
   Timeline timeline;                // the default timeline (every key, a second apart) when absent
