@@ -67,8 +67,8 @@ struct Scene {
   // (meshing/mesh_size.h: sqrt(mean key area) / 16, in [1, 8] px). Default 0.
   double edgeLength = 0;
   // The size guard, "max_vertices": a build whose estimated vertex count exceeds it is refused
-  // before meshing (meshing/mesh_size.h). Default 200,000: on the 2-core VM the initial map of
-  // two keys takes minutes and about 200 MB, Comesh several more (docs/drawings-to-multimesh.md).
+  // before meshing (meshing/mesh_size.h). Default 200,000: on the 2-core VM mapping a second key
+  // of that size takes about 10 CPU minutes at 250 MB, Comesh minutes more (docs/drawings-to-multimesh.md).
   int maxVertices = 200000;
   ArtworkSampling sampling = ArtworkSampling::kAuto;  // "sampling": how front ends filter the drawings
   TracingOptions tracing;
