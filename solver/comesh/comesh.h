@@ -1,8 +1,9 @@
 // Comesh Optimization (paper section 4.6, Algorithm 1): block-cyclic descent over keys on the
 // objective of eq. 8 (comesh_energy.h). Each inner iteration on key i flips edges, splits edges,
 // takes one projected gradient step on X_i (interior vertices move freely, boundary vertices slide
-// along key i's outline) and collapses edges (comesh_topology.h). Features, cut ends and cut sides
-// in the keys that close them stay fixed; every triangle stays positive in every key.
+// along key i's outline) and collapses edges (comesh_topology.h). Features, interior features
+// (ComeshBoundary::pinned), cut ends and cut sides in the keys that close them stay fixed; every
+// triangle stays positive in every key.
 #pragma once
 
 #include "comesh/comesh_mesh.h"

@@ -30,6 +30,7 @@ ComeshMesh::ComeshMesh(const Multimesh& mesh, const ComeshBoundary* boundary)
   for (int v = 0; v < n; ++v) {
     u.row(v).setConstant(boundary->u[v]);
     if (next[v] >= 0) previous[next[v]] = v;
+    if (v < static_cast<int>(boundary->pinned.size()) && boundary->pinned[v]) fixed[v] = 1;
   }
   closedIn = boundary->closedIn;
   point = boundary->point;

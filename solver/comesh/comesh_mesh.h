@@ -30,6 +30,9 @@ struct ComeshBoundary {
   // Length of arc `arc` in key `key` (px): a vertex moving by du along it moves at most |du| times
   // this. Optional; without it a vertex step tries every halving.
   std::function<double(int key, int arc)> arcLength;
+  // [vertex]: an interior vertex that never moves in any key (an interior feature), or empty for
+  // none. Like a feature on the outline it is also never collapsed away.
+  std::vector<char> pinned;
 };
 
 struct ComeshMesh {

@@ -227,7 +227,55 @@ class CutApplier {
   double snapDistance_;
 };
 
+// Distance from p to the nearest point of any loop (px), and that point.
+std::pair<double, Eigen::Vector2d> distanceToLoops(const std::vector<ShapeLoop>& loops, const Eigen::Vector2d& p) {
+  std::pair<double, Eigen::Vector2d> best{std::numeric_limits<double>::infinity(), p};
+  for (const ShapeLoop& loop : loops)
+    for (size_t i = 0, n = loop.points.size(); i < n; ++i) {
+      const Eigen::Vector2d& a = loop.points[i];
+      const Eigen::Vector2d& b = loop.points[(i + 1) % n];
+      const Eigen::Vector2d q = a + closestParameter(a, b, p) * (b - a);
+      if ((q - p).norm() < best.first) best = {(q - p).norm(), q};
+    }
+  return best;
+}
+
 }  // namespace
+
+void checkInteriorFeatures(const Scene& scene, int key, const std::vector<Outline>& outlines, const KeyShape& shape,
+                           double margin) {
+  const KeySpec& spec = scene.keys.at(key);
+  const std::string where = std::filesystem::path(scene.file).filename().string() + ": key " + inQuotes(spec.name);
+  for (const auto& [name, p] : spec.interiorFeatures) {
+    const std::string what = where + ": interior feature " + inQuotes(name) + " at " + formatPoint(p);
+    int crossings = 0;  // odd: inside the shape (outer loops and holes together)
+    bool inPiece = false;
+    for (const Outline& o : outlines) {
+      const bool inOuter = rayCrossings(o.outer, p) % 2 == 1;
+      inPiece = inPiece || inOuter;
+      crossings += inOuter;
+      for (const Polyline& h : o.holes) crossings += rayCrossings(h, p) % 2;
+    }
+    if (crossings % 2 == 0)
+      throw InputError(what + (inPiece ? " lies in a hole of the drawing" : " lies outside the drawing") +
+                       ": interior features are points inside the shape, placed on the drawing in every key "
+                       "(a point on the outline is a \"features\" entry)");
+    const auto [distance, nearest] = distanceToLoops(shape.loops, p);
+    if (distance < margin) {
+      std::ostringstream msg;
+      msg.precision(3);
+      msg << what << " is " << distance << " px from the outline or a cut (at " << formatPoint(nearest)
+          << "); an interior feature needs at least " << margin
+          << " px (one edge length): move it further inside, make it a \"features\" entry on the outline, or lower "
+             "edge_length";
+      throw InputError(msg.str());
+    }
+    for (const auto& [other, q] : spec.interiorFeatures)
+      if (other < name && (q - p).norm() < 1)
+        throw InputError(where + ": interior features " + inQuotes(other) + " and " + inQuotes(name) + " are less than 1 px apart at " +
+                         formatPoint(p) + ": place them apart, or drop one");
+  }
+}
 
 std::pair<int, int> findFeature(const KeyShape& shape, const std::string& feature) {
   for (size_t l = 0; l < shape.loops.size(); ++l) {

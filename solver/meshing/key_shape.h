@@ -37,6 +37,13 @@ struct KeyShapeOptions {
 KeyShape buildKeyShape(const Scene& scene, int key, const std::vector<Outline>& outlines,
                        const KeyShapeOptions& options);
 
+// Checks key `key`'s interior features against its traced drawing and shape (after cuts): each
+// must lie inside the shape (not in a hole, not outside), at least `margin` px from every loop
+// (outline, holes, cut sides), and at least 1 px from the key's other interior features, so that
+// it can be a mesh vertex pinned in every key. Throws InputError naming file, key and feature.
+void checkInteriorFeatures(const Scene& scene, int key, const std::vector<Outline>& outlines, const KeyShape& shape,
+                           double margin);
+
 // Index of the loop and point carrying `feature`, or {-1, -1}.
 std::pair<int, int> findFeature(const KeyShape& shape, const std::string& feature);
 

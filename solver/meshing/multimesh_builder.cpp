@@ -40,6 +40,13 @@ void placeBoundary(const SharedBoundary& boundary, const ReferenceMesh& mesh, in
   }
 }
 
+// Key k's interior features, in the order of ReferenceMesh::interior (by name: every key places the same).
+std::vector<Eigen::Vector2d> interiorPoints(const Scene& scene, int k) {
+  std::vector<Eigen::Vector2d> out;
+  for (const auto& [name, p] : scene.keys[k].interiorFeatures) out.push_back(p);
+  return out;
+}
+
 // Cohesive pairs of key k: the edges of each closed cut's two sides, collocated in key k.
 std::vector<CohesivePair> cohesivePairs(const SharedBoundary& boundary, const ReferenceMesh& mesh, int k) {
   std::vector<CohesivePair> pairs;
@@ -68,13 +75,14 @@ std::vector<int> outlineVertices(const SharedBoundary& boundary, const Reference
   return out;
 }
 
-// Interior vertices at the uniform-weight average of their neighbours (Tutte), boundary fixed.
-void tutteInterior(const ReferenceMesh& mesh, Eigen::MatrixX2d& x) {
+// Free vertices at the uniform-weight average of their neighbours (Tutte), locked ones (boundary,
+// interior features) fixed.
+void tutteInterior(const ReferenceMesh& mesh, const std::vector<char>& locked, Eigen::MatrixX2d& x) {
   const int n = static_cast<int>(mesh.points.size());
   std::vector<int> unknown(n, -1);
   int count = 0;
   for (int v = 0; v < n; ++v)
-    if (mesh.tags[v].arc < 0) unknown[v] = count++;
+    if (!locked[v]) unknown[v] = count++;
   if (count == 0) return;
   std::vector<Eigen::Triplet<double>> entries;
   Eigen::MatrixX2d rhs = Eigen::MatrixX2d::Zero(count, 2);
@@ -126,6 +134,8 @@ ComeshBoundary comeshBoundary(const SharedBoundary& boundary, const ReferenceMes
     return shared->chordDeviation(key, arc, u0, u1, u2);
   };
   out.arcLength = [shared](int key, int arc) { return shared->arcLength(key, arc); };
+  out.pinned.assign(n, 0);
+  for (int v : mesh.interior) out.pinned[v] = 1;
   return out;
 }
 
@@ -143,6 +153,8 @@ Attempt mapKeys(const Scene& scene, const SharedBoundary& boundary, const Refere
   for (int v = 0; v < n; ++v) rest.row(v) = mesh.points[v].transpose();
   std::vector<char> locked(n);
   for (int v = 0; v < n; ++v) locked[v] = mesh.tags[v].arc >= 0;
+  const std::vector<char> onBoundary = locked;
+  for (int v : mesh.interior) locked[v] = 1;  // pinned where each key places its interior feature
   Attempt out;
   std::vector<Eigen::MatrixX2d> positions(m);
   for (int k = 0; k < m; ++k) {
@@ -150,7 +162,10 @@ Attempt mapKeys(const Scene& scene, const SharedBoundary& boundary, const Refere
     Eigen::MatrixX2d& x = positions[k];
     x = rest;
     placeBoundary(boundary, mesh, k, x);
-    if (k != scene.reference) tutteInterior(mesh, x);
+    // Interior features: the reference key has them in place; every other key is mapped with them
+    // free first, then they are moved to the key's placements (untangleToPins).
+    const bool pinsMove = k != scene.reference && !mesh.interior.empty();
+    if (k != scene.reference) tutteInterior(mesh, onBoundary, x);
     if (k != scene.reference || smallestTriangleArea(mesh.triangles, x).first <= 0) {
       UntangleOptions untangleOptions = options.untangle;  // progress within the key: minutes at 100k vertices
       if (options.progress)
@@ -158,7 +173,9 @@ Attempt mapKeys(const Scene& scene, const SharedBoundary& boundary, const Refere
           options.progress("mapping key " + scene.keys[k].name + " (untangling, step " + std::to_string(done) + ")",
                            (k + static_cast<double>(done) / most) / m);
         };
-      const UntangleResult r = untangle(mesh.triangles, rest, x, locked, untangleOptions);
+      UntangleResult r = untangle(mesh.triangles, rest, x, pinsMove ? onBoundary : locked, untangleOptions);
+      if (r.injective && pinsMove)
+        r = untangleToPins(mesh.triangles, rest, x, onBoundary, mesh.interior, interiorPoints(scene, k), untangleOptions);
       if (!r.injective) {
         const Triangle& t = mesh.triangles[r.worstTriangle];
         out.failedKey = k;
@@ -200,6 +217,7 @@ BuiltScene buildMultimesh(const Scene& scene, const MultimeshBuildOptions& optio
   // The scene's edge length or the default that follows the drawings; refused past max_vertices
   // before any meshing (meshing/mesh_size.h).
   double edgeLength = meshEdgeLength(scene, built.outlines);
+  for (int k = 0; k < m; ++k) checkInteriorFeatures(scene, k, built.outlines[k], built.shapes[k], edgeLength);
   for (int attempt = 0;; ++attempt) {
     SharedBoundaryOptions bo;
     bo.edgeLength = edgeLength;
@@ -211,7 +229,7 @@ BuiltScene buildMultimesh(const Scene& scene, const MultimeshBuildOptions& optio
     mo.maxEdgeLength = edgeLength;
     ReferenceMesh mesh;
     try {
-      mesh = meshReference(boundary, scene.reference, mo);
+      mesh = meshReference(boundary, scene.reference, mo, interiorPoints(scene, scene.reference));
     } catch (const InputError& e) {
       throw InputError(file + ": key " + inQuotes(scene.keys[scene.reference].name) + ": cannot mesh: " + e.what());
     }
@@ -230,7 +248,7 @@ BuiltScene buildMultimesh(const Scene& scene, const MultimeshBuildOptions& optio
       throw InputError(file + ": key " + inQuotes(scene.keys[result.failedKey].name) +
                        ": cannot map the mesh onto this key without folding triangles near " + formatPoint(result.failedAt) +
                        " (tried edge lengths down to " + formatLength(edgeLength) +
-                       " px" + (finerFits ? "" : ": a finer one would pass max_vertices") + "); check that its features and cuts match the other keys there");
+                       " px" + (finerFits ? "" : ": a finer one would pass max_vertices") + "); check that its features, interior features and cuts match the other keys there");
     edgeLength /= 1.5;
   }
 }

@@ -55,7 +55,7 @@ class Builder {
  public:
   Builder(const SharedBoundary& boundary, int reference) : boundary_(boundary), reference_(reference) {}
 
-  ReferenceMesh run(const ConformingMeshOptions& options) {
+  ReferenceMesh run(const ConformingMeshOptions& options, const std::vector<Eigen::Vector2d>& interior) {
     const Resampled r = resample(boundary_, reference_);
     // Collocated points become one mesher input point ("location").
     std::map<std::pair<double, double>, int> ids;
@@ -78,6 +78,11 @@ class Builder {
       if (n > 2) throw InputError("three boundary pieces share the edge at " + formatPoint(locations[e.first]));
       (n == 1 ? outline : cuts).push_back({e.first, e.second});
     }
+    // Interior features: free mesher input points after the boundary's, kept as vertices.
+    for (const Eigen::Vector2d& p : interior) {
+      mesh_.interior.push_back(static_cast<int>(locations.size()));
+      locations.push_back(p);
+    }
     ConformingMesh cm = conformingMesh(locations, outline, cuts, options);
     mesh_.points = cm.points;
     mesh_.triangles = cm.triangles;
@@ -85,6 +90,8 @@ class Builder {
     for (size_t v = 0; v < origin_.size(); ++v) origin_[v] = static_cast<int>(v);
     cutOpen(cm.cuts);
     mesh_.tags.assign(mesh_.points.size(), BoundaryTag{});
+    pinned_.assign(mesh_.points.size(), 0);
+    for (int v : mesh_.interior) pinned_[v] = 1;
     tagBoundary(r, location);
     buildChains();
     mirrorCutSides();
@@ -258,6 +265,7 @@ class Builder {
       for (int& v : chain) v = index[v];
     for (int& v : mesh_.arcEnd)
       if (v >= 0) v = index[v];
+    for (int& v : mesh_.interior) v = index[v];
     std::vector<Triangle> triangles;
     triangles.reserve(mesh_.triangles.size());
     for (int t : triangleOrder(mesh_.triangles)) triangles.push_back(mesh_.triangles[t]);
@@ -274,7 +282,7 @@ class Builder {
           faces[undirected(mesh_.triangles[t][c], mesh_.triangles[t][(c + 1) % 3])].push_back(static_cast<int>(t));
       std::vector<char> touched(mesh_.triangles.size(), 0);
       for (const auto& [e, tris] : faces) {
-        if (tris.size() != 2 || mesh_.tags[e.first].arc < 0 || mesh_.tags[e.second].arc < 0) continue;
+        if (tris.size() != 2 || !pinned(e.first) || !pinned(e.second)) continue;
         if (touched[tris[0]] || touched[tris[1]]) {
           changed = true;
           continue;
@@ -297,16 +305,21 @@ class Builder {
     }
   }
 
+  // Fixed in every key: on the boundary, or an interior feature.
+  bool pinned(int v) const { return mesh_.tags[v].arc >= 0 || (v < static_cast<int>(pinned_.size()) && pinned_[v]); }
+
   const SharedBoundary& boundary_;
   int reference_;
+  std::vector<char> pinned_;  // per vertex before renumbering: an interior feature
   ReferenceMesh mesh_;
   std::vector<int> origin_;  // per vertex: the mesher point it copies (-1 for points added here)
 };
 
 }  // namespace
 
-ReferenceMesh meshReference(const SharedBoundary& boundary, int reference, const ConformingMeshOptions& options) {
-  return Builder(boundary, reference).run(options);
+ReferenceMesh meshReference(const SharedBoundary& boundary, int reference, const ConformingMeshOptions& options,
+                            const std::vector<Eigen::Vector2d>& interior) {
+  return Builder(boundary, reference).run(options, interior);
 }
 
 }  // namespace ib

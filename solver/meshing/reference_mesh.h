@@ -22,12 +22,16 @@ struct ReferenceMesh {
   std::vector<BoundaryTag> tags;         // per vertex
   std::vector<std::vector<int>> arcChains;  // [arc]: its vertices by increasing u (first at u = 0)
   std::vector<int> arcEnd;                  // [arc]: the vertex where it ends (the next arc's first)
+  std::vector<int> interior;                // [interior feature]: its vertex, exactly at the given point
 };
 
 // Resamples the reference key's boundary (each arc into its segments), meshes it with
-// `options`, and cuts it open. A boundary point the mesher adds to one side of a cut is added to
-// the other side too, and an interior edge between two boundary vertices is split, so that no
-// triangle has all three corners pinned by the boundary.
-ReferenceMesh meshReference(const SharedBoundary& boundary, int reference, const ConformingMeshOptions& options);
+// `options` with a vertex at each of `interior` (the interior features in the reference key, px,
+// inside the shape and apart from its boundary), and cuts it open. A boundary point the mesher
+// adds to one side of a cut is added to the other side too, and an interior edge between two
+// pinned vertices (boundary or interior feature) is split, so that no triangle has all three
+// corners pinned.
+ReferenceMesh meshReference(const SharedBoundary& boundary, int reference, const ConformingMeshOptions& options,
+                            const std::vector<Eigen::Vector2d>& interior = {});
 
 }  // namespace ib

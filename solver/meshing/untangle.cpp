@@ -1,6 +1,9 @@
 #include "meshing/untangle.h"
 
 #include <Eigen/Dense>
+#include <Eigen/SparseCholesky>
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <deque>
 #include <limits>
@@ -196,6 +199,102 @@ UntangleResult untangle(const std::vector<Triangle>& triangles, const Eigen::Mat
     if (!locked[v]) positions(v, 0) = x[2 * v] * unit, positions(v, 1) = x[2 * v + 1] * unit;
   std::tie(result.minArea, result.worstTriangle) = smallestTriangleArea(triangles, positions);
   result.injective = result.minArea > 0;
+  return result;
+}
+
+namespace {
+
+// The uniform-weight harmonic extension of the moves of the `carried` vertices (a move per
+// vertex, rows of `move`) to the other free ones, the locked ones fixed: n x 2, px.
+Eigen::MatrixX2d harmonicSpread(const std::vector<Triangle>& triangles, const std::vector<char>& locked,
+                                const std::vector<char>& carried, const Eigen::MatrixX2d& move) {
+  const int n = static_cast<int>(move.rows());
+  std::vector<int> unknown(n, -1);
+  int count = 0;
+  for (int v = 0; v < n; ++v)
+    if (!locked[v] && !carried[v]) unknown[v] = count++;
+  Eigen::MatrixX2d out = move;
+  if (count == 0) return out;
+  std::vector<Eigen::Triplet<double>> entries;
+  Eigen::MatrixX2d rhs = Eigen::MatrixX2d::Zero(count, 2);
+  for (const Triangle& t : triangles)
+    for (int c = 0; c < 3; ++c)
+      for (int d = 1; d < 3; ++d) {
+        const int v = t[c], w = t[(c + d) % 3];
+        if (unknown[v] < 0) continue;
+        entries.emplace_back(unknown[v], unknown[v], 1.0);
+        if (unknown[w] >= 0) entries.emplace_back(unknown[v], unknown[w], -1.0);
+        else rhs.row(unknown[v]) += move.row(w);
+      }
+  Eigen::SparseMatrix<double> laplacian(count, count);
+  laplacian.setFromTriplets(entries.begin(), entries.end());
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(laplacian);
+  if (solver.info() != Eigen::Success) return out;
+  const Eigen::MatrixX2d spread = solver.solve(rhs);
+  for (int v = 0; v < n; ++v)
+    if (unknown[v] >= 0) out.row(v) = spread.row(unknown[v]);
+  return out;
+}
+
+}  // namespace
+
+UntangleResult untangleToPins(const std::vector<Triangle>& triangles, const Eigen::MatrixX2d& rest,
+                              Eigen::MatrixX2d& positions, const std::vector<char>& locked, const std::vector<int>& pins,
+                              const std::vector<Eigen::Vector2d>& targets, const UntangleOptions& options) {
+  const int n = static_cast<int>(positions.rows());
+  std::vector<char> held = locked;  // the boundary and the pins
+  for (int v : pins) held[v] = 1;
+  Eigen::MatrixX2d from(pins.size(), 2), move(pins.size(), 2);  // px: where the pins start, and their whole move
+  for (size_t p = 0; p < pins.size(); ++p) {
+    from.row(p) = positions.row(pins[p]);
+    move.row(p) = targets[p].transpose() - from.row(p);
+  }
+  // Each step needs only a fold-free map to start the next one from (a failing step then costs a
+  // sixth of a full untangling); the last map is polished with the full options.
+  UntangleOptions stepOptions = options;
+  stepOptions.outerIterations = std::min(options.outerIterations, 10);
+  stepOptions.progress = nullptr;
+  UntangleResult result;
+  double done = 0, step = 1;  // fractions of the whole move
+  while (done < 1) {
+    const double to = std::min(1.0, done + step);
+    // Every free vertex within half the pin's distance to the boundary moves with the pin, as a
+    // disc; the rest follow harmonically. A disc's move spreads over the ring between it and the
+    // boundary, so a step may be a good part of that distance (a lone vertex would fold its
+    // neighbours once it moves by more than about an edge).
+    std::vector<char> carried(n, 0);
+    Eigen::MatrixX2d stepMove = Eigen::MatrixX2d::Zero(n, 2);
+    std::vector<double> radius(pins.size(), std::numeric_limits<double>::infinity());
+    for (size_t p = 0; p < pins.size(); ++p)
+      for (int v = 0; v < n; ++v)
+        if (locked[v]) radius[p] = std::min(radius[p], 0.5 * (positions.row(v) - positions.row(pins[p])).norm());
+    for (int v = 0; v < n; ++v) {
+      if (locked[v]) continue;
+      int nearest = -1;
+      double best = std::numeric_limits<double>::infinity();
+      for (size_t p = 0; p < pins.size(); ++p) {
+        const double d = (positions.row(v) - positions.row(pins[p])).norm();
+        if (d <= radius[p] && d < best) best = d, nearest = static_cast<int>(p);
+      }
+      if (nearest < 0) continue;
+      carried[v] = 1;
+      stepMove.row(v) = (to - done) * move.row(nearest);
+    }
+    Eigen::MatrixX2d candidate = positions + harmonicSpread(triangles, locked, carried, stepMove);
+    for (size_t p = 0; p < pins.size(); ++p)
+      candidate.row(pins[p]) = to >= 1 ? targets[p].transpose() : Eigen::RowVector2d(from.row(p) + to * move.row(p));
+    result = untangle(triangles, rest, candidate, held, stepOptions);
+    if (result.injective) {
+      positions = candidate;
+      done = to;
+      step = std::min(1.0, 2 * step);
+    } else if ((step /= 2) < 1.0 / 128) {
+      return result;
+    }
+  }
+  Eigen::MatrixX2d polished = positions;
+  const UntangleResult last = untangle(triangles, rest, polished, held, options);
+  if (last.injective) positions = polished, result = last;
   return result;
 }
 

@@ -39,6 +39,19 @@ UntangleResult untangle(const std::vector<Triangle>& triangles, const Eigen::Mat
                         Eigen::MatrixX2d& positions, const std::vector<char>& locked,
                         const UntangleOptions& options);
 
+// Moves the vertices `pins` (interior features) from where they are in `positions` to `targets`
+// (px), keeping the map foldover-free: in steps, each carrying the free vertices along by the
+// harmonic (uniform-weight) extension of the pins' move and then untangling with the pins held at
+// the step's place; a step that cannot be untangled is halved (down to 1/128 of the way). So a
+// pin may move far from where the map put it (an eye from one side of the body to the other),
+// which untangling a Tutte start with the pins in place cannot always undo. positions: a
+// foldover-free map (n x 2), updated in place; locked: the vertices that never move (the
+// boundary); the pins end exactly at `targets`. Returns the last untangling's result
+// (injective false when even the smallest step folds).
+UntangleResult untangleToPins(const std::vector<Triangle>& triangles, const Eigen::MatrixX2d& rest,
+                              Eigen::MatrixX2d& positions, const std::vector<char>& locked, const std::vector<int>& pins,
+                              const std::vector<Eigen::Vector2d>& targets, const UntangleOptions& options);
+
 // The smallest signed area over triangles and where it is.
 std::pair<double, int> smallestTriangleArea(const std::vector<Triangle>& triangles, const Eigen::MatrixX2d& positions);
 

@@ -243,6 +243,12 @@ std::vector<int> featureVertices(const Scene& scene, const Multimesh& mesh) {
       }
       if (best >= 0) out.push_back(best);
     }
+    for (const auto& [name, point] : scene.keys[k].interiorFeatures) {  // the build puts a vertex exactly there
+      if (X.rows() == 0) break;
+      Eigen::Index best = 0;
+      (X.rowwise() - point.transpose()).rowwise().squaredNorm().minCoeff(&best);
+      out.push_back(static_cast<int>(best));
+    }
   }
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());

@@ -89,7 +89,8 @@ SceneMultimesh sceneMultimesh(const Scene& scene, const SceneMultimeshOptions& o
 std::string cachedMeshPath(const std::string& scenePath);
 
 // Vertices at the scene's features: for every key's feature, the boundary vertex of that key
-// nearest to it. Sorted, without repeats.
+// nearest to it; for every key's interior feature, the vertex of that key nearest to it (the
+// build puts one exactly there). Sorted, without repeats.
 std::vector<int> featureVertices(const Scene& scene, const Multimesh& mesh);
 
 }  // namespace ib

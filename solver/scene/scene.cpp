@@ -46,7 +46,7 @@ CutSpec parseCut(const json& j, const Context& key, size_t index) {
 }
 
 KeySpec parseKey(const json& j, const Context& scene, const std::filesystem::path& folder, size_t index) {
-  requireObject(j, element(j, scene, "key", index), {"name", "drawing", "features", "cuts", "holes"});
+  requireObject(j, element(j, scene, "key", index), {"name", "drawing", "features", "interior_features", "cuts", "holes"});
   KeySpec key;
   key.name = text(j, "name", element(j, scene, "key", index));
   const Context at = scene.in("key " + inQuotes(key.name));
@@ -58,6 +58,18 @@ KeySpec parseKey(const json& j, const Context& scene, const std::filesystem::pat
     for (auto it = features.begin(); it != features.end(); ++it) {
       if (it.key().empty()) throw at.in("features").error("a feature needs a non-empty name");
       key.features[it.key()] = point(it.value(), at.in("feature " + inQuotes(it.key())));
+    }
+  }
+  if (j.contains("interior_features")) {
+    const json& features = j["interior_features"];
+    if (!features.is_object())
+      throw at.in("interior_features").error("must be an object {\"name\": [x, y], ...}: points inside the shape");
+    for (auto it = features.begin(); it != features.end(); ++it) {
+      const Context f = at.in("interior feature " + inQuotes(it.key()));
+      if (it.key().empty()) throw at.in("interior_features").error("an interior feature needs a non-empty name");
+      if (it.key().find('.') != std::string::npos)
+        throw f.error("names with a '.' are reserved for the features cuts create; rename it without the '.' in every key");
+      key.interiorFeatures[it.key()] = point(it.value(), f);
     }
   }
   if (j.contains("cuts")) {
@@ -183,6 +195,26 @@ void checkCorrespondence(const Scene& scene, const Context& at) {
     }
 }
 
+// Every key places the same interior features, none named like a plain feature. Where they lie
+// against each key's shape is checked once it is traced (meshing/key_shape.h, checkInteriorFeatures).
+void checkInteriorFeatures(const Scene& scene, const Context& at) {
+  std::map<std::string, std::string> interior;  // feature -> a key placing it
+  for (const KeySpec& key : scene.keys)
+    for (const auto& [f, p] : key.interiorFeatures) {
+      interior.insert({f, key.name});
+      for (const KeySpec& other : scene.keys)
+        if (other.features.count(f))
+          throw at.in("key " + inQuotes(key.name)).error("interior feature " + inQuotes(f) + " has the name of a feature key " +
+                                                      inQuotes(other.name) + " places on its outline; give it another name");
+    }
+  for (const KeySpec& key : scene.keys)
+    for (const auto& [f, owner] : interior)
+      if (!key.interiorFeatures.count(f))
+        throw at.in("key " + inQuotes(key.name)).error("does not place interior feature " + inQuotes(f) + " (key " +
+                                                    inQuotes(owner) + " does): every key places the same interior features, "
+                                                    "each where that point of the drawing is in this key");
+}
+
 }  // namespace
 
 std::vector<std::string> cutFeatureNames(const std::string& cut, CutKind kind) {
@@ -240,6 +272,7 @@ Scene parseScene(const std::string& source, const std::string& path) {
   if (j.contains("tracing")) parseTracing(j["tracing"], at.in("tracing"), scene.tracing);
   if (j.contains("solver")) parseSolver(j["solver"], at.in("solver"), scene.solver);
   checkCorrespondence(scene, at);
+  checkInteriorFeatures(scene, at);
   std::vector<std::string> names;
   for (const KeySpec& key : scene.keys) names.push_back(key.name);
   scene.timeline = j.contains("timeline") ? parseTimeline(j["timeline"], names, at.file) : defaultTimeline(names);

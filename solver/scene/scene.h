@@ -38,6 +38,10 @@ struct KeySpec {
   std::string drawing;                               // path, resolved against the scene's folder
   std::map<std::string, Eigen::Vector2d> features;   // placed by the author, drawing pixels
   std::vector<CutSpec> cuts;                         // cuts closed in this key
+  // Points inside the shape that correspond across keys (an eye, a foot drawn over the body), kept
+  // as mesh vertices at these positions in every key, drawing pixels; "interior_features" in the
+  // scene. Every key places the same names (docs/scene-format.md, "Interior features").
+  std::map<std::string, Eigen::Vector2d> interiorFeatures = {};
   // Drawings traced by colour: a point inside each enclosed paper region that is a hole (else
   // enclosed paper is part of the shape), drawing pixels; "holes" in the scene.
   Polyline holes = {};
