@@ -1,5 +1,6 @@
 // `inbetween bench shape`: how full-bodied and how evenly paced the inbetweens are, per scene and
 // shape metric (../shared/shape-averaging.md): one JSON line per scene and metric.
+#include "animation/even_spacing.h"
 #include "bench/bench.h"
 
 #include "core/error.h"
@@ -21,20 +22,23 @@ namespace {
 
 constexpr const char* kUsage =
     "usage: inbetween bench shape [--assets DIR | --scene FILE] [--metric shared|per_key|both] [--steps N]\n"
-    "                             [--no-comesh] [--threads N]\n"
+    "                             [--spacing weights|even] [--no-comesh] [--threads N]\n"
     "\n"
     "Walks every segment between consecutive marks of each scene's timeline in N equal steps of the\n"
     "weights (linear timing, no dynamics), solving each step from the one before, and measures the\n"
-    "inbetweens. One JSON line per scene and metric: scene, metric, vertices, segments, steps,\n"
+    "inbetweens. One JSON line per scene and metric: scene, metric, spacing, vertices, segments, steps,\n"
     "min_area_ratio (the smallest area of an inbetween over the area interpolated between its keys,\n"
     "sum_k w_k area(X_k)), worst_segment (where it is), max_snap (over segments, the larger change of\n"
     "the first and last step over the middle step's; 1 is even pacing; change = RMS vertex move),\n"
-    "iterations_per_step, converged (share of steps), seconds (solving).\n"
+    "max_retime (with --spacing even: how far it moves a pose in time, in segment fractions),\n"
+    "iterations_per_step, converged (share of steps), seconds (solving, the even-spacing samples included).\n"
     "\n"
     "  --assets DIR    folder of scenes, each DIR/NAME/scene.json (default: the source tree's assets/)\n"
     "  --scene FILE    one scene instead\n"
     "  --metric M      shared, per_key or both (default both)\n"
     "  --steps N       steps per segment, 4..1000 (default 24)\n"
+    "  --spacing S     weights: equal steps of the weights (default); even: equal steps of the path's\n"
+    "                  even-spacing parameter (timeline \"spacing\": \"even\", docs/animation.md)\n"
     "  --no-comesh     measure the initial map (default: Comesh-optimized, as `inbetween mesh`)\n"
     "  --threads N     solver threads, 0 = all cores (default 0)\n";
 
@@ -48,8 +52,17 @@ double rmsMove(const Eigen::MatrixX2d& a, const Eigen::MatrixX2d& b) {
   return std::sqrt((a - b).rowwise().squaredNorm().mean());
 }
 
+// The scene's marks joined by straight, linear segments (the path measured), evenly spaced when
+// `even`: each segment's table from `solver`.
+Timeline straightPaths(const Timeline& timeline, Interpolator& solver, bool even) {
+  std::vector<TimelineSegment> segments(timeline.segments().size());
+  for (TimelineSegment& segment : segments) segment.spacingKind = even ? SegmentSpacing::kEven : SegmentSpacing::kWeights;
+  const Timeline straight(timeline.fps(), timeline.loops(), timeline.marks(), std::move(segments));
+  return even ? evenSpacing(straight, solver) : straight;
+}
+
 nlohmann::json measure(const std::string& name, const Scene& scene, const Multimesh& mesh, ShapeMetric metric, int steps,
-                       int threads) {
+                       bool even, int threads) {
   InterpolationParams params = interpolationParams(scene.solver);
   params.metric = metric;
   SolverOptions options;
@@ -62,13 +75,19 @@ nlohmann::json measure(const std::string& name, const Scene& scene, const Multim
   int worst = -1, converged = 0, solved = 0;
   long iterations = 0;
   const auto started = std::chrono::steady_clock::now();
+  const Timeline paths = straightPaths(scene.timeline, solver, even);
+  // How far even spacing moves the poses in time: max |L(p_j) - p_j|, in segment fractions.
+  double retime = 0;
+  for (const TimelineSegment& segment : paths.segments())
+    for (size_t j = 0; j < segment.spacing.size(); ++j)
+      retime = std::max(retime, std::abs(segment.spacing[j] - static_cast<double>(j) / (segment.spacing.size() - 1)));
   for (size_t segment = 0; segment + 1 < marks.size(); ++segment) {
     const Eigen::VectorXd& a = marks[segment].weights;
     const Eigen::VectorXd& b = marks[segment + 1].weights;
     if ((a - b).cwiseAbs().maxCoeff() < 1e-12) continue;  // a hold
     std::vector<Eigen::MatrixX2d> x;
     for (int j = 0; j <= steps; ++j) {
-      const double s = double(j) / steps;
+      const double s = pathParameter(paths.segments()[segment], double(j) / steps);
       const Eigen::VectorXd w = (1 - s) * a + s * b;
       const InterpolationResult r = solver.solve(w, x.empty() ? nullptr : &x.back());
       iterations += r.iterations;
@@ -90,12 +109,14 @@ nlohmann::json measure(const std::string& name, const Scene& scene, const Multim
   seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   return {{"scene", name},
           {"metric", metric == ShapeMetric::kShared ? "shared" : "per_key"},
+          {"spacing", even ? "even" : "weights"},
           {"vertices", mesh.vertexCount()},
           {"segments", static_cast<int>(marks.size()) - 1},
           {"steps", steps},
           {"min_area_ratio", worst < 0 ? 1.0 : minRatio},
           {"worst_segment", worst},
           {"max_snap", maxSnap},
+          {"max_retime", retime},
           {"iterations_per_step", solved ? static_cast<double>(iterations) / solved : 0.0},
           {"converged", solved ? static_cast<double>(converged) / solved : 1.0},
           {"seconds", seconds}};
@@ -120,6 +141,8 @@ void run(const cli::Arguments& a, const BenchOutput& output) {
   if (metrics.empty()) throw InputError("bench shape: --metric: '" + metricName + "' is not shared, per_key or both");
   const int steps = a.integer("steps", 24, 4, 1000);
   const int threads = a.integer("threads", 0, 0, 256);
+  const std::string spacing = a.value("spacing", "weights");
+  if (spacing != "weights" && spacing != "even") throw InputError("bench shape: --spacing: '" + spacing + "' is not weights or even");
   for (const auto& file : scenes) {
     const Scene scene = loadScene(file.string());
     const std::string name = file.filename() == "scene.json" ? file.parent_path().filename().string() : file.stem().string();
@@ -129,7 +152,7 @@ void run(const cli::Arguments& a, const BenchOutput& output) {
     meshOptions.comesh = !a.flag("no-comesh");
     const auto built = sceneMultimesh(scene, meshOptions, [&](const std::string& stage, double f) { progress.update(name + ": " + stage, f); });
     progress.finish();
-    for (ShapeMetric metric : metrics) output.printLine(measure(name, scene, *built.multimesh, metric, steps, threads));
+    for (ShapeMetric metric : metrics) output.printLine(measure(name, scene, *built.multimesh, metric, steps, spacing == "even", threads));
   }
 }
 
@@ -137,7 +160,7 @@ void run(const cli::Arguments& a, const BenchOutput& output) {
 
 Benchmark shapeBenchmark() {
   return {"shape", "how full-bodied and evenly paced the inbetweens are, per shape metric", kUsage,
-          {"assets", "scene", "metric", "steps", "threads"}, {"no-comesh"}, run};
+          {"assets", "scene", "metric", "steps", "spacing", "threads"}, {"no-comesh"}, run};
 }
 
 }  // namespace ib

@@ -1,5 +1,6 @@
 #include "animation/frame_stream.h"
 
+#include "animation/even_spacing.h"
 #include "animation/warm_start.h"
 #include "core/error.h"
 
@@ -79,6 +80,9 @@ FrameStream::State::State(const Multimesh& mesh, const Timeline& timeline, const
     : mesh_(mesh), timeline_(timeline), params_(params), options_(options), dynamics_(dynamics),
       plain_(matching(mesh, timeline), params, options) {
   validateDynamics(dynamics, "dynamics: ");
+  // Segments with even spacing and no table yet get theirs from this stream's own solver (K
+  // solves each, once); evenSpacing forgets the solver's history, so frame 0 is solved as fresh.
+  if (needsEvenSpacing(timeline_)) timeline_ = evenSpacing(timeline_, plain_);
   if (dynamics.enabled()) prepareDynamics();
 }
 

@@ -42,7 +42,8 @@ AnimationFrame plainFrame(const Eigen::VectorXd& weights, const InterpolationRes
 class FrameStream {
  public:
   // Validates the parameters (InputError naming the field). The timeline's key count must match
-  // the multimesh's.
+  // the multimesh's. Segments asking for even spacing without a table get one here (evenSpacing,
+  // even_spacing.h: K plain solves per segment with these parameters; setParameters keeps it).
   FrameStream(const Multimesh& mesh, const Timeline& timeline, const InterpolationParams& params,
               const SolverOptions& options, const DynamicsParams& dynamics);
 
@@ -113,7 +114,7 @@ class FrameStream {
   // (before it when the frame comes back cancelled).
   AnimationFrame frameAt(double time);
 
-  const Timeline& timeline() const;
+  const Timeline& timeline() const;  // as played: with the even-spacing tables
   const DynamicsParams& dynamics() const;
   double shapeSize() const;  // s = sqrt(mean key area), in the multimesh's units
 

@@ -26,17 +26,36 @@ struct TimelineMark {
 // follow the Bezier curve A, C_1, .., C_k, B in the weight simplex at parameter e: every key's
 // weight is its own curve, all stay convex (Bernstein weights are non-negative and sum to 1),
 // and the curve still starts at A and ends at B.
+//
+// Between easing and the path sits the segment's spacing: the path parameter p at eased time e.
+// kWeights (the default): p = e, equal steps of the weights. kEven: equal steps of the shape,
+// p = L^-1(e) with L(p) the fraction of the segment's shape change (RMS vertex move of the plain
+// inbetween) done by path parameter p; easing then paces that evenly changing shape. L depends on
+// the solver, so the Timeline only carries its table; evenSpacing (even_spacing.h) fills it, and
+// FrameStream does so when a segment asks for kEven without one (docs/animation.md, "Even
+// spacing").
+enum class SegmentSpacing { kWeights, kEven };
+
 struct TimelineSegment {
   Easing easing;
   std::vector<Eigen::VectorXd> controls;  // m x 1 each, convex
+  SegmentSpacing spacingKind = SegmentSpacing::kWeights;
+  // The remap table of the path parameter: spacing[j] = L(j / (K - 1)), K >= 2 samples, strictly
+  // increasing from exactly 0 to exactly 1. p(e) is its monotone cubic (Fritsch-Carlson) inverse,
+  // so p(0) = 0, p(1) = 1 and p never goes back. Empty: p = e (the identity).
+  std::vector<double> spacing;
 };
+
+// The path parameter p in [0, 1] at eased time e in [0, 1] (clamped) through segment.spacing.
+// Deterministic; exactly 0 at 0 and 1 at 1.
+double pathParameter(const TimelineSegment& segment, double e);
 
 class Timeline {
  public:
   // A still: one mark at time 0 holding the first of one key, 24 frames per second.
   Timeline();
-  // marks: at least one, finite times strictly increasing; segments: marks.size() - 1; fps > 0.
-  // Anything else is the caller's error (std::invalid_argument): parseTimeline checks first and
+  // marks: at least one, finite times strictly increasing; segments: marks.size() - 1; fps > 0;
+  // each segment's spacing table empty or as TimelineSegment says. Anything else is the caller's error (std::invalid_argument): parseTimeline checks first and
   // names the field.
   Timeline(double fps, bool loop, std::vector<TimelineMark> marks, std::vector<TimelineSegment> segments);
 
@@ -64,6 +83,9 @@ class Timeline {
 
   // w(s): m x 1, convex. Before the first mark and after the last, the nearest mark's weights.
   Eigen::VectorXd weights(double s) const;
+  // The weights on segment k's path at path parameter p in [0, 1] (after easing and spacing):
+  // its start mark's weights at 0, its end mark's at 1. k in [0, segments().size()).
+  Eigen::VectorXd pathWeights(int segment, double p) const;
 
  private:
   double wrap(double s) const;

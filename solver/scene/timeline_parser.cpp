@@ -38,14 +38,29 @@ Easing parseEasing(const json& j, const Context& at) {
   throw at.error("must be a name (linear, ease-in, ease-out, ease-in-out, hold) or {\"cubic_bezier\": [x1, y1, x2, y2]}");
 }
 
+// "spacing": "weights" (equal steps of the weights) or "even" (equal steps of the shape).
+SegmentSpacing parseSpacing(const json& j, SegmentSpacing fallback, const Context& at) {
+  if (!j.contains("spacing")) return fallback;
+  const json& v = j["spacing"];
+  if (v.is_string() && v.get<std::string>() == "weights") return SegmentSpacing::kWeights;
+  if (v.is_string() && v.get<std::string>() == "even") return SegmentSpacing::kEven;
+  throw at.in("spacing").error("must be \"weights\" (equal steps of the weights) or \"even\" (equal steps of the shape)");
+}
+
 }  // namespace
 
 Timeline parseTimeline(const json& j, const std::vector<std::string>& keyNames, const std::string& file) {
   const Context at = Context{file, ""}.in("timeline");
-  requireObject(j, at, {"fps", "loop", "marks"});
+  requireObject(j, at, {"fps", "loop", "marks", "spacing"});
   const double fps = number(j, "fps", 24, at, 0, 1000, true);
   const bool loop = boolean(j, "loop", false, at);
-  if (!j.contains("marks")) return defaultTimeline(keyNames, fps, loop);
+  const SegmentSpacing spacing = parseSpacing(j, SegmentSpacing::kWeights, at);  // every segment's unless its mark says
+  if (!j.contains("marks")) {
+    const Timeline plain = defaultTimeline(keyNames, fps, loop);
+    std::vector<TimelineSegment> segments = plain.segments();
+    for (TimelineSegment& segment : segments) segment.spacingKind = spacing;
+    return Timeline(fps, plain.loops(), plain.marks(), std::move(segments));
+  }
   const json& marksJson = j["marks"];
   if (!marksJson.is_array() || marksJson.empty()) throw at.in("marks").error("must be an array of at least one mark");
   std::vector<TimelineMark> marks;
@@ -53,7 +68,7 @@ Timeline parseTimeline(const json& j, const std::vector<std::string>& keyNames, 
   for (size_t k = 0; k < marksJson.size(); ++k) {
     const json& mj = marksJson[k];
     const Context here = at.in("mark " + std::to_string(k + 1));
-    requireObject(mj, here, {"time", "key", "weights", "ease", "blend"});
+    requireObject(mj, here, {"time", "key", "weights", "ease", "blend", "spacing"});
     if (!mj.contains("time")) throw here.error("missing field \"time\" (seconds)");
     TimelineMark mark;
     mark.time = number(mj, "time", 0, here, -1e9, 1e9);
@@ -70,10 +85,11 @@ Timeline parseTimeline(const json& j, const std::vector<std::string>& keyNames, 
       mark.weights = parseWeights(mj["weights"], keyNames, here.in("weights"));
     }
     const bool last = k + 1 == marksJson.size();
-    if (last && (mj.contains("ease") || mj.contains("blend")))
-      throw here.error("the last mark starts no segment, so it takes no \"ease\" or \"blend\"");
+    if (last && (mj.contains("ease") || mj.contains("blend") || mj.contains("spacing")))
+      throw here.error("the last mark starts no segment, so it takes no \"ease\", \"blend\" or \"spacing\"");
     if (!last) {
       TimelineSegment segment;
+      segment.spacingKind = parseSpacing(mj, spacing, here);
       if (mj.contains("ease")) segment.easing = parseEasing(mj["ease"], here.in("ease"));
       if (mj.contains("blend")) {
         const json& blend = mj["blend"];
