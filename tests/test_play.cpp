@@ -279,12 +279,11 @@ TEST_CASE("play: Save parameters writes the tuned values into the scene, which t
   REQUIRE(saved.worker().waitIdle(120));
   const std::shared_ptr<const AnimationFrame> after = saved.worker().cached(kFrame);
   REQUIRE(after);
-  // The same multimesh and parameters: the same frame within the solver's tolerance. Not bit for
-  // bit: which frames the worker solves first, and so which warm starts and checkpoints a frame
-  // comes from, depends on timing (seen under CI load: 0.06 px apart, and 0.001 px with both
-  // sessions idle first), while tau 0.004 and lambda 2500 against the defaults move frame 18 by
-  // 11.9 px.
-  CHECK((after->x - before->x).cwiseAbs().maxCoeff() < 0.1);
+  // The same multimesh and parameters: the same frame within what the solver's tolerance allows at
+  // a cut that is opening. Not bit for bit: which frames the worker solves first, and so which warm
+  // starts and checkpoints frame 18 comes from, depends on timing (seen on CI runs: 0.001, 0.06 and
+  // 0.12 px apart), while tau 0.004 and lambda 2500 against the defaults move frame 18 by 11.9 px.
+  CHECK((after->x - before->x).cwiseAbs().maxCoeff() < 1.0);
 }
 
 TEST_CASE("play: the keyboard shortcuts drive the transport, weights mode, the overlays and closing", "[.window]") {
