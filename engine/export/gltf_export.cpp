@@ -68,16 +68,14 @@ GltfExportReport writeGltf(const BakedAnimation& baked, const render::RenderMesh
   report.targets = static_cast<int>(reduction.kept.size()) - 1;
   report.layers = static_cast<int>(doc.model.meshes.front().primitives.size());
   report.maxError = reduction.maxError;
-  report.bytes = documentBytes(doc, container, binName);
   if (quantize || options.maxError > 0) {
     const PositionCodec raw(scene.canvas, options.pixelsPerUnit, false, baked.positions.front(), baked.positions);
     std::vector<int> every(n);
     for (int f = 0; f < n; ++f) every[f] = f;
     report.bytesRaw = documentBytes(buildDocument(inputFor(baked, mesh, scene, options, raw, every)), container, binName);
-  } else {
-    report.bytesRaw = report.bytes;
   }
-  writeDocument(doc, path);
+  report.bytes = writeDocument(doc, path);
+  if (report.bytesRaw == 0) report.bytesRaw = report.bytes;  // nothing reduced: the same file
   return report;
 }
 

@@ -121,17 +121,20 @@ size_t documentBytes(const GltfDocument& doc, Container container, const std::st
   return documentJson(doc, uriOf(binName)).size() + doc.bin.size();
 }
 
-void writeDocument(const GltfDocument& doc, const std::string& path) {
+size_t writeDocument(const GltfDocument& doc, const std::string& path) {
   if (containerOf(path, "-o") == Container::kGlb) {
-    writeFileAtomically(path, glbBytes(doc));
-    return;
+    const std::string bytes = glbBytes(doc);
+    writeFileAtomically(path, bytes);
+    return bytes.size();
   }
   const fs::path gltf(path);
   const fs::path bin = fs::path(gltf).replace_extension(".bin");
   const bool hadBin = fs::exists(bin);
   writeFileAtomically(bin.string(), std::string(doc.bin.begin(), doc.bin.end()));
   try {
-    writeFileAtomically(path, documentJson(doc, uriOf(bin.filename().string())));
+    const std::string json = documentJson(doc, uriOf(bin.filename().string()));
+    writeFileAtomically(path, json);
+    return json.size() + doc.bin.size();
   } catch (...) {
     std::error_code ignored;
     if (!hadBin) fs::remove(bin, ignored);

@@ -16,9 +16,10 @@ enum class Container { kGlb, kGltf };
 size_t documentBytes(const GltfDocument& doc, Container container, const std::string& binName = "scene.bin");
 
 // Writes `path` (.glb, or .gltf with its .bin beside it), each file atomically; when the .gltf
-// cannot be written after its .bin, a .bin that did not exist before is removed again. Throws
-// InputError naming the path when a file cannot be written.
-void writeDocument(const GltfDocument& doc, const std::string& path);
+// cannot be written after its .bin, a .bin that did not exist before is removed again. Returns
+// the bytes written (documentBytes of the same). Throws InputError naming the path when a file
+// cannot be written.
+size_t writeDocument(const GltfDocument& doc, const std::string& path);
 
 // The container a path's extension names (.glb or .gltf, any case); InputError naming the path
 // and the `field` otherwise.
