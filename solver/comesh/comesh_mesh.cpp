@@ -21,6 +21,7 @@ ComeshMesh::ComeshMesh(const Multimesh& mesh, const ComeshBoundary* boundary)
   previous.assign(n, -1);
   u = Eigen::MatrixXd::Zero(n, m);
   fixed.assign(n, 0);
+  held.assign(m, std::vector<char>(n, 0));
   if (!boundary) {
     for (int v = 0; v < n; ++v) fixed[v] = mesh.onBoundary()[v];
     return;
@@ -32,6 +33,8 @@ ComeshMesh::ComeshMesh(const Multimesh& mesh, const ComeshBoundary* boundary)
     if (next[v] >= 0) previous[next[v]] = v;
     if (v < static_cast<int>(boundary->pinned.size()) && boundary->pinned[v]) fixed[v] = 1;
   }
+  for (int k = 0; k < m && k < static_cast<int>(boundary->heldIn.size()); ++k)
+    for (int v = 0; v < n && v < static_cast<int>(boundary->heldIn[k].size()); ++v) held[k][v] = boundary->heldIn[k][v];
   closedIn = boundary->closedIn;
   point = boundary->point;
   chordDeviation = boundary->chordDeviation;
@@ -39,7 +42,7 @@ ComeshMesh::ComeshMesh(const Multimesh& mesh, const ComeshBoundary* boundary)
 }
 
 bool ComeshMesh::slides(int v, int k) const {
-  return arc[v] >= 0 && !fixed[v] && u(v, k) > 0 && point && !closedIn[arc[v]][k];
+  return arc[v] >= 0 && !fixed[v] && !held[k][v] && u(v, k) > 0 && point && !closedIn[arc[v]][k];
 }
 
 int ComeshMesh::triangleWith(int a, int b) const {
@@ -159,6 +162,7 @@ int ComeshMesh::addVertex(const std::vector<Eigen::Vector2d>& positions) {
     keys[k].conservativeResize(v + 1, 2);
     keys[k].row(v) = positions[k].transpose();
     outline[k].push_back(0);
+    held[k].push_back(0);
   }
   u.conservativeResize(v + 1, Eigen::NoChange);
   u.row(v).setZero();

@@ -33,6 +33,9 @@ struct ComeshBoundary {
   // [vertex]: an interior vertex that never moves in any key (an interior feature), or empty for
   // none. Like a feature on the outline it is also never collapsed away.
   std::vector<char> pinned;
+  // [key][vertex]: a boundary vertex on a corner of that key's outline, which does not slide in
+  // that key and is never collapsed away; or empty for none.
+  std::vector<std::vector<char>> heldIn;
 };
 
 struct ComeshMesh {
@@ -85,6 +88,7 @@ struct ComeshMesh {
   std::vector<std::vector<CohesivePair>> cohesive;  // [key]: C_i
   std::vector<std::vector<char>> outline;           // [key][vertex]: in B_i
   std::vector<char> fixed;                    // [vertex]: never moves (all boundary vertices without `boundary`)
+  std::vector<std::vector<char>> held;        // [key][vertex]: does not slide in that key (an outline corner there)
   long topologyVersion = 0;                   // counts changes of the triangle list: flips, splits, collapses, compact()
   long vertexSetVersion = 0;                  // counts splits and collapses (vertices added or emptied)
 

@@ -136,6 +136,12 @@ ComeshBoundary comeshBoundary(const SharedBoundary& boundary, const ReferenceMes
   out.arcLength = [shared](int key, int arc) { return shared->arcLength(key, arc); };
   out.pinned.assign(n, 0);
   for (int v : mesh.interior) out.pinned[v] = 1;
+  out.heldIn.assign(keys, std::vector<char>(n, 0));
+  for (size_t v = 0; v < n; ++v) {
+    const int arc = mesh.tags[v].arc, knot = arc >= 0 ? boundary.knotAt(arc, mesh.tags[v].u) : -1;
+    if (knot < 0) continue;
+    for (int k = 0; k < keys; ++k) out.heldIn[k][v] = boundary.arcs[arc].knotCornerIn[knot][k];
+  }
   return out;
 }
 
@@ -221,6 +227,7 @@ BuiltScene buildMultimesh(const Scene& scene, const MultimeshBuildOptions& optio
   for (int attempt = 0;; ++attempt) {
     SharedBoundaryOptions bo;
     bo.edgeLength = edgeLength;
+    bo.corners = scene.corners;
     const SharedBoundary boundary = matchBoundaries(scene, built.shapes, bo);
     if (options.progress)
       options.progress("meshing " + scene.keys[scene.reference].name + " (" +

@@ -1,6 +1,7 @@
 #include "meshing/shared_boundary.h"
 
 #include "core/error.h"
+#include "meshing/boundary_sampling.h"
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -141,7 +142,8 @@ class Matcher {
     for (size_t l = 0; l < ref.loops.size(); ++l) addArcs(static_cast<int>(l));
     for (size_t k = 0; k < shapes_.size(); ++k) matchKey(static_cast<int>(k));
     pairCutSides();
-    countSegments();
+    placeCornerKnots(out_, ref_, options_);
+    countSegments(out_, ref_, options_.edgeLength);
     return std::move(out_);
   }
 
@@ -153,11 +155,11 @@ class Matcher {
     const auto features = featuresFrom(shapes_[ref_].loops[loop], 0);
     std::vector<int> arcs;
     if (features.empty()) {
-      out_.arcs.push_back({loop, 0, "", "", 1, -1, {}});
+      out_.arcs.push_back({loop, 0, "", "", 1, -1, {}, {}, {}});
       arcs.push_back(static_cast<int>(out_.arcs.size()) - 1);
     }
     for (size_t i = 0; i < features.size(); ++i) {
-      out_.arcs.push_back({loop, static_cast<int>(i), features[i].first, features[(i + 1) % features.size()].first, 1, -1, {}});
+      out_.arcs.push_back({loop, static_cast<int>(i), features[i].first, features[(i + 1) % features.size()].first, 1, -1, {}, {}, {}});
       arcs.push_back(static_cast<int>(out_.arcs.size()) - 1);
     }
     out_.loopArcs.push_back(arcs);
@@ -325,28 +327,6 @@ class Matcher {
       }
   }
 
-  // Enough segments that no key's boundary edge is longer than the edge length; partners equal;
-  // at least three per loop.
-  void countSegments() {
-    for (size_t a = 0; a < out_.arcs.size(); ++a) {
-      double longest = 0;
-      for (size_t k = 0; k < shapes_.size(); ++k)
-        longest = std::max(longest, out_.arcLength(static_cast<int>(k), static_cast<int>(a)));
-      out_.arcs[a].segments = std::max(1, static_cast<int>(std::ceil(longest / options_.edgeLength - 1e-9)));
-    }
-    for (BoundaryArc& arc : out_.arcs)
-      if (arc.partner >= 0) arc.segments = std::max(arc.segments, out_.arcs[arc.partner].segments);
-    for (const std::vector<int>& loop : out_.loopArcs) {
-      int total = 0;
-      for (int a : loop) total += out_.arcs[a].segments;
-      for (size_t i = 0; total < 3; ++i, ++total) {
-        BoundaryArc& arc = out_.arcs[loop[i % loop.size()]];
-        ++arc.segments;
-        if (arc.partner >= 0) out_.arcs[arc.partner].segments = arc.segments;
-      }
-    }
-  }
-
   const Scene& scene_;
   const std::vector<KeyShape>& shapes_;
   SharedBoundaryOptions options_;
@@ -369,17 +349,35 @@ double SharedBoundary::arcLength(int key, int arc) const {
   return span;
 }
 
+double SharedBoundary::fraction(int key, int arc, double u) const {
+  const std::vector<double>& knot = arcs[arc].knots;
+  if (knot.empty()) return u;
+  const std::vector<double>& f = keys[key].knotFractions[arc];
+  const size_t j = std::upper_bound(knot.begin(), knot.end(), u) - knot.begin();  // knots at or before u
+  const double u0 = j > 0 ? knot[j - 1] : 0, u1 = j < knot.size() ? knot[j] : 1;
+  const double f0 = j > 0 ? f[j - 1] : 0, f1 = j < knot.size() ? f[j] : 1;
+  return u1 > u0 ? f0 + (u - u0) / (u1 - u0) * (f1 - f0) : f0;
+}
+
+int SharedBoundary::knotAt(int arc, double u) const {
+  const std::vector<double>& knots = arcs[arc].knots;
+  for (size_t j = 0; j < knots.size(); ++j)
+    if (std::abs(knots[j] - u) < 1e-12) return static_cast<int>(j);
+  return -1;
+}
+
 Eigen::Vector2d SharedBoundary::at(int key, int arc, double u) const {
   const BoundaryArc& a = arcs[arc];
   const KeyBoundary& kb = keys[key];
-  return kb.loops[a.loop].at(kb.arcStarts[a.loop][a.indexInLoop] + u * arcLength(key, arc));
+  return kb.loops[a.loop].at(kb.arcStarts[a.loop][a.indexInLoop] + fraction(key, arc, u) * arcLength(key, arc));
 }
 
 double SharedBoundary::chordDeviation(int key, int arc, double u0, double u1, double u2) const {
   const BoundaryArc& a = arcs[arc];
   const KeyBoundary& kb = keys[key];
   const double start = kb.arcStarts[a.loop][a.indexInLoop], length = arcLength(key, arc);
-  return kb.loops[a.loop].chordDeviation({start + u0 * length, start + u1 * length, start + u2 * length});
+  const auto along = [&](double u) { return start + fraction(key, arc, u) * length; };
+  return kb.loops[a.loop].chordDeviation({along(u0), along(u1), along(u2)});
 }
 
 SharedBoundary matchBoundaries(const Scene& scene, const std::vector<KeyShape>& shapes,

@@ -5,6 +5,7 @@
 
 #include "core/plane_geometry.h"
 #include "meshing/key_shape.h"
+#include "meshing/outline_corners.h"
 
 #include <Eigen/Core>
 #include <string>
@@ -21,6 +22,10 @@ struct BoundaryArc {
   int segments = 1;           // boundary edges along it, the same in every key
   int partner = -1;           // the arc along the other side of the same cut, or -1
   std::vector<int> closedIn;  // keys where this arc and its partner are collocated
+  // Fractions u in (0, 1), increasing, of the arc's corner vertices (multiples of 1 / segments):
+  // where some key's outline has a corner (SharedBoundaryOptions::corners). Empty for cut sides.
+  std::vector<double> knots;
+  std::vector<std::vector<char>> knotCornerIn;  // [knot][key]: the knot is a corner of that key's outline
 };
 
 // One key's loops in reference loop order, each parametrized by arc length, with the arc length
@@ -28,11 +33,18 @@ struct BoundaryArc {
 struct KeyBoundary {
   std::vector<ArcLengthLoop> loops;
   std::vector<std::vector<double>> arcStarts;  // [loop][i]: start of the loop's i-th arc
+  // [arc][knot]: where each of the arc's knots lies in this key, as a fraction of the arc's length
+  // here; between knots, fractions of u map linearly.
+  std::vector<std::vector<double>> knotFractions;
 };
+
 
 struct SharedBoundaryOptions {
   double edgeLength = 8;  // px: longest boundary edge in any key (arcs are split to fit). Default 8.
   int alignmentSamples = 64;  // samples per loop for the automatic start of featureless loops. Default 64.
+  // Outline corners: detected over a window of one edge length, paired with the default
+  // CornerMatchOptions, unpaired ones merged within one edge length. Default paired.
+  CornerHandling corners = CornerHandling::kPaired;
 };
 
 struct SharedBoundary {
@@ -41,9 +53,13 @@ struct SharedBoundary {
   std::vector<KeyBoundary> keys;             // [key]
 
   double arcLength(int key, int arc) const;
-  // The point of key `key` at fraction u in [0, 1] of arc `arc`'s length.
+  // Fraction of arc `arc`'s length in key `key` at u in [0, 1] (u itself on an arc without knots).
+  double fraction(int key, int arc, double u) const;
+  // The index of arc `arc`'s knot at u, or -1.
+  int knotAt(int arc, double u) const;
+  // The point of key `key` at u in [0, 1] along arc `arc`.
   Eigen::Vector2d at(int key, int arc, double u) const;
-  // Largest distance of key `key`'s outline between fractions u0 <= u1 <= u2 of arc `arc` from
+  // Largest distance of key `key`'s outline between u0 <= u1 <= u2 along arc `arc` from
   // the chords u0 -> u1 and u1 -> u2 between their points (px); u1 = u2 for a single chord.
   double chordDeviation(int key, int arc, double u0, double u1, double u2) const;
 };

@@ -241,7 +241,7 @@ Scene parseScene(const std::string& source, const std::string& path) {
     throw at.error(std::string("malformed JSON: ") + e.what());
   }
   requireObject(j, at,
-                {"version", "reference", "edge_length", "max_vertices", "sampling", "tracing", "solver", "keys", "timeline",
+                {"version", "reference", "edge_length", "max_vertices", "corners", "sampling", "tracing", "solver", "keys", "timeline",
                  "dynamics", "stiffness"});
   if (!j.contains("version") || !j["version"].is_number_integer() || j["version"].get<int>() != 1)
     throw at.in("version").error("must be 1 (the only scene format version so far)");
@@ -261,6 +261,15 @@ Scene parseScene(const std::string& source, const std::string& path) {
   }
   if (j.contains("edge_length")) scene.edgeLength = number(j, "edge_length", scene.edgeLength, at, 0.5, 1e6);
   scene.maxVertices = static_cast<int>(number(j, "max_vertices", scene.maxVertices, at, 100, 1e9));
+  if (j.contains("corners")) {
+    const std::string corners = text(j, "corners", at);
+    if (corners == "paired") scene.corners = CornerHandling::kPaired;
+    else if (corners == "vertices") scene.corners = CornerHandling::kVertices;
+    else if (corners == "off") scene.corners = CornerHandling::kOff;
+    else throw at.in("corners").error(inQuotes(corners) + " is not \"paired\" (a vertex at every outline corner; corners "
+                                      "that correspond pair up like features), \"vertices\" (a vertex at every corner, "
+                                      "no pairing) or \"off\" (arc length between features only)");
+  }
   if (j.contains("sampling")) {
     const std::string sampling = text(j, "sampling", at);
     if (sampling == "auto") scene.sampling = ArtworkSampling::kAuto;

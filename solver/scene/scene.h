@@ -7,6 +7,7 @@
 #include "animation/dynamics.h"
 #include "animation/timeline.h"
 #include "interpolation/shape_metric.h"
+#include "meshing/outline_corners.h"
 #include "meshing/stiffness_paint.h"
 #include "meshing/tracing.h"
 
@@ -74,6 +75,9 @@ struct Scene {
   // before meshing (meshing/mesh_size.h). Default 200,000: on the 2-core VM mapping a second key
   // of that size takes about 10 CPU minutes at 250 MB, Comesh minutes more (docs/drawings-to-multimesh.md).
   int maxVertices = 200000;
+  // "corners": how the shared boundary treats the outlines' corners (meshing/outline_corners.h).
+  // Default paired.
+  CornerHandling corners = CornerHandling::kPaired;
   ArtworkSampling sampling = ArtworkSampling::kAuto;  // "sampling": how front ends filter the drawings
   TracingOptions tracing;
   SceneSolverParams solver;
