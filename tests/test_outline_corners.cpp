@@ -1,7 +1,7 @@
 // Outline corners (meshing/outline_corners.h) and what the shared boundary does with them
 // ("corners" in the scene): detection on loops with known corners, the pairing of corners across
-// keys, a boundary vertex at every paired corner in every key, and the drawn bat flapping its wings
-// (tests/drawn/bat), whose armpits pair up so that Comesh meets the extreme-deformation targets.
+// keys, a boundary vertex at every paired corner in every key, and the drawn wing flaps and leg
+// swings (tests/drawn), on which Comesh meets the extreme-deformation targets.
 #include "core/error.h"
 #include "meshing/multimesh_builder.h"
 #include "meshing/outline_corners.h"
@@ -148,19 +148,24 @@ TEST_CASE("corners: an unknown \"corners\" value names the field and the values 
                                          Catch::Contains("\"off\""));
 }
 
-TEST_CASE("extreme deformation: the drawn 512 px bat after Comesh has every key's smallest angle >= 10 deg, <= 2% under 20 deg, MIPS max < 20") {
-  const Scene scene = loadScene(INBETWEEN_ASSETS "/../tests/drawn/bat/bat512.json");
-  SceneMultimeshOptions options;
-  options.useCache = false;
-  const SceneMultimesh built = sceneMultimesh(scene, options);
-  const MultimeshQuality quality = measureQuality(*built.multimesh);
-  for (size_t k = 0; k < quality.keys.size(); ++k) {
-    INFO("key " << scene.keys[k].name);
-    CHECK(quality.keys[k].smallestAngle >= 10);
-    CHECK(quality.keys[k].shareUnder20 <= 0.02);
-  }
-  for (const MapQuality& map : quality.maps) {
-    INFO("map " << scene.keys[map.from].name << " -> " << scene.keys[map.to].name);
-    CHECK(map.mipsMax < 20);
+TEST_CASE("extreme deformation: the drawn wing flaps and leg swings after Comesh have every key's smallest angle >= 10 deg, <= 2% under 20 deg, MIPS max < 20") {
+  // bat512 pairs its armpits by itself; at 96 px they are too soft to be corners and the scene
+  // places them as features (bat96.json, with the wing tips only, does not meet the targets).
+  for (const char* name : {"bat/bat512.json", "bat/bat96-armpits.json", "leg/leg64.json", "leg/leg512.json"}) {
+    INFO("tests/drawn/" << name);
+    const Scene scene = loadScene(std::string(INBETWEEN_ASSETS "/../tests/drawn/") + name);
+    SceneMultimeshOptions options;
+    options.useCache = false;
+    const SceneMultimesh built = sceneMultimesh(scene, options);
+    const MultimeshQuality quality = measureQuality(*built.multimesh);
+    for (size_t k = 0; k < quality.keys.size(); ++k) {
+      INFO("key " << scene.keys[k].name);
+      CHECK(quality.keys[k].smallestAngle >= 10);
+      CHECK(quality.keys[k].shareUnder20 <= 0.02);
+    }
+    for (const MapQuality& map : quality.maps) {
+      INFO("map " << scene.keys[map.from].name << " -> " << scene.keys[map.to].name);
+      CHECK(map.mipsMax < 20);
+    }
   }
 }
