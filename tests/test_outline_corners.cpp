@@ -169,3 +169,26 @@ TEST_CASE("extreme deformation: the drawn wing flaps and leg swings after Comesh
     }
   }
 }
+
+TEST_CASE("extreme deformation: adding consistent features (the top and bottom of the bat's body) keeps the build working and within the targets") {
+  for (const char* name : {"bat512", "bat96-armpits"}) {
+    INFO("tests/drawn/bat/" << name << ".json with features crown and tail");
+    const std::string folder = INBETWEEN_ASSETS "/../tests/drawn/bat/";
+    Scene scene = loadScene(folder + name + ".json");
+    const double s = std::string(name) == "bat512" ? 1.0 : 96.0 / 512;  // the body does not move between keys
+    for (KeySpec& key : scene.keys) {
+      key.features["crown"] = Eigen::Vector2d(256, 210) * s;
+      key.features["tail"] = Eigen::Vector2d(256, 350) * s;
+    }
+    SceneMultimeshOptions options;
+    options.useCache = false;
+    const SceneMultimesh built = sceneMultimesh(scene, options);
+    const MultimeshQuality quality = measureQuality(*built.multimesh);
+    for (size_t k = 0; k < quality.keys.size(); ++k) {
+      INFO("key " << scene.keys[k].name);
+      CHECK(quality.keys[k].smallestAngle >= 10);
+      CHECK(quality.keys[k].shareUnder20 <= 0.02);
+    }
+    for (const MapQuality& map : quality.maps) CHECK(map.mipsMax < 20);
+  }
+}
