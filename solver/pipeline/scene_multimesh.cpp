@@ -9,6 +9,7 @@
 #include "scene/scene.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -102,8 +103,10 @@ std::vector<std::string> comeshRegressions(const Scene& scene, const Multimesh& 
   for (size_t k = 0; k < before.keys.size() && k < after.keys.size(); ++k) {
     const KeyQuality &b = before.keys[k], &a = after.keys[k];
     if (a.smallestAngle < b.smallestAngle - 0.05) {
-      std::snprintf(text, sizeof text, "key %s's smallest angle %.1f -> %.1f deg", name(static_cast<int>(k)).c_str(),
-                    b.smallestAngle, a.smallestAngle);
+      // One decimal, or two when one would print the same figure twice.
+      const int digits = std::round(10 * b.smallestAngle) == std::round(10 * a.smallestAngle) ? 2 : 1;
+      std::snprintf(text, sizeof text, "key %s's smallest angle %.*f -> %.*f deg", name(static_cast<int>(k)).c_str(),
+                    digits, b.smallestAngle, digits, a.smallestAngle);
       trades.push_back(text);
     }
     if (a.shareUnder20 > b.shareUnder20 + 0.0005) {
