@@ -47,7 +47,7 @@ std::vector<Benchmark> benchmarks() {
 #ifdef INBETWEEN_WITH_ENGINE
           renderBenchmark(), playBenchmark(),
 #endif
-          cutBenchmark(), shapeBenchmark()};
+          cutBenchmark(), shapeBenchmark(), examplesBenchmark()};
 }
 
 std::string usage(const std::vector<Benchmark>& all) {

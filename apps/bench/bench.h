@@ -45,6 +45,7 @@ Benchmark playBenchmark();
 #endif
 Benchmark cutBenchmark();
 Benchmark shapeBenchmark();
+Benchmark examplesBenchmark();
 
 // args: the words after "bench". Returns the exit code; throws InputError on bad arguments.
 int runBench(const std::vector<std::string>& args);
