@@ -110,20 +110,26 @@ TEST_CASE("render: every bundled cut glued in an inbetween shows no seam (alpha 
     for (int k = 0; k < m; ++k) {
       if (mesh.cohesivePairs(k).empty()) continue;
       // Key k, whose cuts are glued, with as much of the keys that draw them open as keeps them
-      // glued (gaps under a quarter pixel): the first of w_k = 0.5, 0.6, .., 0.9 that does.
+      // glued (gaps under a quarter pixel): the first of w_k = 0.5, 0.6, .., 0.9, 0.95, 0.99 that
+      // does. Examples whose cuts let go at once (a cohesive threshold tau of 1e-7 makes a cell
+      // split as soon as it starts to move) have no glued inbetween to look at.
       const Eigen::MatrixX2d glued = mesh.keyPositions(k);
       Eigen::VectorXd w;
       Eigen::MatrixX2d x;
       double widest = INFINITY;
-      for (double wk = 0.5; wk < 0.95 && widest >= 0.25; wk += 0.1) {
+      for (double wk : {0.5, 0.6, 0.7, 0.8, 0.9, 0.95, 0.99}) {
         w = Eigen::VectorXd::Constant(m, (1 - wk) / (m - 1));
         w[k] = wk;
         x = interpolator.solve(w, &glued).x;  // from key k, as a stream leaving it would
         widest = 0;
         for (const Edge& e : art.cutSides.partners) widest = std::max(widest, (x.row(e[0]) - x.row(e[1])).norm());
+        if (widest < 0.25) break;
       }
       INFO(file << " at w = " << w.transpose() << ": cut gaps up to " << widest << " px");
-      REQUIRE(widest < 0.25);
+      if (widest >= 0.25) {
+        CHECK(scene.solver.tau <= 1e-5);  // only a scene that asks for it lets go at once
+        continue;
+      }
       const RgbaImage image = OffscreenRenderer(context, art, bundled.target(k)).render(bundled.frame(k, x, w));
       const RgbaImage covered = OffscreenRenderer(context, coverage, bundled.target(k)).render(bundled.frame(k, x, w));
       int inside = 0, seeThrough = 0, lowest = 255;

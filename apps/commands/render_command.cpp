@@ -3,9 +3,11 @@
 #include "animation/frame_stream.h"
 #include "commands/output_folder.h"
 #include "commands/render_options.h"
+#include "core/atomic_file.h"
 #include "core/error.h"
 #include "interpolation/interpolator.h"
 #include "multimesh/multimesh.h"
+#include "output/animated_png.h"
 #include "output/contact_sheet.h"
 #include "output/onion_window.h"
 #include "pipeline/key_drawings.h"
@@ -29,7 +31,7 @@ constexpr const char* kUsage =
     "\n"
     "Plays the scene's timeline and renders every frame headless (Vulkan; lavapipe without a GPU):\n"
     "each key's drawing textured onto the deforming mesh, blended by the weights. Writes\n"
-    "DIR/frame_NNNN.png (straight alpha) and DIR/contact_sheet.png.\n"
+    "DIR/frame_NNNN.png (straight alpha), DIR/contact_sheet.png and, with --preview, DIR/preview.png.\n"
     "\n"
     "  -o, --output DIR     folder for the frames, created if missing (and removed again if the\n"
     "                       command fails)\n"
@@ -46,6 +48,8 @@ constexpr const char* kUsage =
     "  --features           draw the feature vertices, blue\n"
     "  --onion N            onion skins: N neighbouring frames each side, faded (0..2, default 0)\n"
     "  --sheet-every K      every K-th frame on the contact sheet (default: at most 36 tiles)\n"
+    "  --preview            also DIR/preview.png: every frame at the contact sheet's tile size (240 px\n"
+    "                       wide at most), an animated PNG (APNG) that loops at the timeline's rate\n"
     "  --mesh FILE          multimesh to use (default: SCENE's .ibmesh from `inbetween mesh` when\n"
     "                       newer than the scene and drawings, else built now)\n"
     "  --no-comesh          when building the multimesh, skip Comesh Optimization\n"
@@ -79,7 +83,7 @@ int runRender(const std::vector<std::string>& rawArgs) {
   const cli::Arguments arguments("render", args,
                                  {"output", "frames", "size", "fps", "background", "samples", "sampling", "onion", "sheet-every",
                                   "mesh", "device", "threads"},
-                                 {"wireframe", "cohesive", "features", "no-comesh", "validation"});
+                                 {"wireframe", "cohesive", "features", "no-comesh", "validation", "preview"});
   if (arguments.positional().size() != 1) throw InputError("render: needs exactly one SCENE file (see `inbetween render --help`)");
   const std::string scenePath = arguments.positional()[0];
   RenderOptions options = parseRenderOptions(arguments);
@@ -129,7 +133,7 @@ int runRender(const std::vector<std::string>& rawArgs) {
   const int every = options.sheetEvery > 0 ? options.sheetEvery : (rendered + 35) / 36;
   const int tileW = std::min(240, size[0]);
   const int tileH = std::max(1, static_cast<int>(std::lround(double(tileW) * size[1] / size[0])));
-  std::vector<RgbaImage> tiles;
+  std::vector<RgbaImage> tiles, preview;
   std::deque<int> inFlight;           // frame indices submitted, oldest first
   int written = 0;
   const auto started = std::chrono::steady_clock::now();
@@ -138,7 +142,11 @@ int runRender(const std::vector<std::string>& rawArgs) {
     inFlight.pop_front();
     const RgbaImage image = renderer.take();
     writePng(framePath(dir, f), image);
-    if ((f - range[0]) % every == 0) tiles.push_back(render::shrink(image, tileW, tileH));
+    if ((f - range[0]) % every == 0 || options.preview) {
+      RgbaImage tile = render::shrink(image, tileW, tileH);
+      if ((f - range[0]) % every == 0) tiles.push_back(tile);
+      if (options.preview) preview.push_back(std::move(tile));
+    }
     ++written;
     progress.update("rendering frame " + std::to_string(f) + " (" + std::to_string(written) + " of " + std::to_string(rendered) + ")",
                     0.3 + 0.7 * written / rendered);
@@ -157,6 +165,9 @@ int runRender(const std::vector<std::string>& rawArgs) {
   while (!inFlight.empty()) collect();
   const std::string sheetPath = (dir / "contact_sheet.png").string();
   writePng(sheetPath, render::contactSheet(tiles, {}));
+  const std::string previewPath = (dir / "preview.png").string();
+  if (options.preview)
+    writeFileAtomically(previewPath, render::encodeAnimatedPng(preview, static_cast<int>(std::lround(1000 / timeline.fps()))));
   progress.finish();
   for (const std::string& note : notes) std::fprintf(stderr, "inbetween: note: %s\n", note.c_str());
   if (options.validation && !context.validationMessages().empty())
@@ -166,7 +177,8 @@ int runRender(const std::vector<std::string>& rawArgs) {
   std::printf("%s: rendered frames %d..%d (%dx%d, %g fps timeline) on %s in %.2f s (%.1f frames/s); multimesh %s\n",
               scenePath.c_str(), range[0], range[1], size[0], size[1], timeline.fps(), context.deviceName().c_str(), seconds,
               written / seconds, source.c_str());
-  std::printf("wrote %s .. %s and %s\n", framePath(dir, range[0]).c_str(), framePath(dir, range[1]).c_str(), sheetPath.c_str());
+  std::printf("wrote %s .. %s and %s%s\n", framePath(dir, range[0]).c_str(), framePath(dir, range[1]).c_str(), sheetPath.c_str(),
+              options.preview ? (" and " + previewPath).c_str() : "");
   return 0;
 }
 

@@ -79,6 +79,7 @@ RenderOptions parseRenderOptions(const cli::Arguments& a) {
   o.sampling = parseSampling(a);
   o.onion = a.integer("onion", 0, 0, render::kMaxOnionSkins / 2);
   o.sheetEvery = a.integer("sheet-every", 0, 0, 100000);
+  o.preview = a.flag("preview");
   o.mesh.meshFile = a.value("mesh", "");
   o.mesh.comesh = !a.flag("no-comesh");
   const std::string device = a.value("device", "any");

@@ -256,6 +256,8 @@ BuiltScene buildMultimesh(const Scene& scene, const MultimeshBuildOptions& optio
                        ": cannot map the mesh onto this key without folding triangles near " + formatPoint(result.failedAt) +
                        " (tried edge lengths down to " + formatLength(edgeLength) +
                        " px" + (finerFits ? "" : ": a finer one would pass max_vertices") + "); check that its features, interior features and cuts match the other keys there");
+    built.failedAttempts.push_back("at " + formatLength(edgeLength) + " px, key " + inQuotes(scene.keys[result.failedKey].name) +
+                                   " folded near " + formatPoint(result.failedAt));
     edgeLength /= 1.5;
   }
 }

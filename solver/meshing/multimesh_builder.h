@@ -44,6 +44,8 @@ struct BuiltScene {
   std::vector<KeyReport> report;               // [key]
   double edgeLength = 0;                       // px: the edge length finally used
   int attempts = 0;                            // meshing attempts made (1 = no refinement needed)
+  // Each failed attempt before the one that worked, e.g. `at 6 px, key "full" folded near (312.0, 140.0)`.
+  std::vector<std::string> failedAttempts;
 };
 
 // Throws InputError naming the file, key and place for bad drawings, features, cuts, loops that do

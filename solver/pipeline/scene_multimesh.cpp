@@ -132,6 +132,18 @@ std::vector<std::string> comeshRegressions(const Scene& scene, const Multimesh& 
   return {note};
 }
 
+// A build that had to refine its mesh to map every key: at which edge length it was built and why.
+std::vector<std::string> refinementNotes(const Scene& scene, const BuiltScene& built) {
+  if (built.failedAttempts.empty()) return {};
+  char length[32];
+  std::snprintf(length, sizeof length, "%.3g", built.edgeLength);
+  std::string note = fs::path(scene.file).filename().string() + ": built at edge length " + length +
+                     " px, finer than asked: mapping the mesh onto every key without folding triangles failed ";
+  for (size_t i = 0; i < built.failedAttempts.size(); ++i) note += (i ? "; then " : "") + built.failedAttempts[i];
+  return {note + " (each retry divides the edge length by 1.5). Set \"edge_length\" to " + length +
+          " to skip the failed attempts, or check the features and cuts of that key there"};
+}
+
 SceneMultimesh build(const Scene& scene, const SceneMultimeshOptions& options, MonotoneProgress& progress) {
   const double buildShare = options.comesh ? 0.3 : 1.0;  // of the whole call; Comesh takes the rest
   MultimeshBuildOptions buildOptions;
@@ -146,6 +158,7 @@ SceneMultimesh build(const Scene& scene, const SceneMultimeshOptions& options, M
   out.edgeLength = built.edgeLength;
   out.initial = std::make_shared<const Multimesh>(std::move(*built.multimesh));
   out.multimesh = out.initial;
+  out.notes = refinementNotes(scene, built);
   if (!options.comesh) return out;
 
   const ComeshOptions* given = options.comeshOptions;
@@ -165,7 +178,7 @@ SceneMultimesh build(const Scene& scene, const SceneMultimeshOptions& options, M
   } catch (const InputError& e) {  // the input was fine: a broken result is our fault (exit 1)
     throw std::runtime_error(std::string("Comesh Optimization produced an invalid multimesh: ") + e.what());
   }
-  out.notes = comeshRegressions(scene, *out.initial, optimized);
+  for (std::string& note : comeshRegressions(scene, *out.initial, optimized)) out.notes.push_back(std::move(note));
   out.multimesh = std::make_shared<const Multimesh>(std::move(optimized));
   out.comesh = std::move(report);
   return out;

@@ -1,0 +1,44 @@
+#!/bin/sh
+# Regenerates the gallery (docs/gallery.md and docs/gallery/): for every example of the paper in
+# assets/ (those with a README.md), `inbetween render --preview` draws its timeline at 160 x 160 px
+# over white; its contact sheet and its animated preview (APNG) are copied into docs/gallery/, and
+# docs/gallery.md shows them with the example's README paragraph.
+#
+#   scripts/gallery.sh [BUILD_DIR]   (default: build, as scripts/setup.sh makes it)
+set -eu
+root=$(cd "$(dirname "$0")/.." && pwd)
+build=${1:-$root/build}
+inbetween=$build/apps/inbetween
+[ -x "$inbetween" ] || { echo "gallery.sh: $inbetween is missing: build first (scripts/setup.sh)" >&2; exit 2; }
+out=$root/docs/gallery
+scratch=$(mktemp -d)
+trap 'rm -rf "$scratch"' EXIT
+mkdir -p "$out"
+page=$scratch/gallery.md
+{
+  echo "# Gallery"
+  echo
+  echo "The paper's examples, redrawn for the project (\`assets/\`), each played through its timeline by"
+  echo "\`inbetween render --preview\` at 160 x 160 px: the animated preview (APNG), then the contact"
+  echo "sheet of its frames. \`scripts/gallery.sh\` makes this page again."
+} > "$page"
+for readme in "$root"/assets/*/README.md; do
+  dir=$(dirname "$readme")
+  name=$(basename "$dir")
+  [ -f "$dir/scene.json" ] || continue
+  echo "gallery.sh: $name" >&2
+  "$inbetween" render "$dir/scene.json" -o "$scratch/$name" --size 160x160 --background ffffff --preview --device cpu > /dev/null
+  cp "$scratch/$name/preview.png" "$out/$name.png"
+  cp "$scratch/$name/contact_sheet.png" "$out/$name-sheet.png"
+  {
+    echo
+    echo "## $name"
+    echo
+    # The README's paragraph: the lines after the title, up to the first blank line after text.
+    awk 'NR > 1 && /^$/ && seen { exit } NR > 1 && !/^$/ { seen = 1; print }' "$readme"
+    echo
+    echo "![$name](gallery/$name.png) ![$name, contact sheet](gallery/$name-sheet.png)"
+  } >> "$page"
+done
+mv "$page" "$root/docs/gallery.md"
+echo "gallery.sh: wrote docs/gallery.md and docs/gallery/" >&2
