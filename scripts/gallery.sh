@@ -1,6 +1,6 @@
 #!/bin/sh
 # Regenerates the gallery (docs/gallery.md and docs/gallery/): for every example of the paper in
-# assets/ (those with a README.md), `inbetween render --preview` draws its timeline at 160 x 160 px
+# assets/ (those with a README.md), `inbetween render --preview` draws its timeline at 128 x 128 px, 12 frames a second
 # over white; its contact sheet and its animated preview (APNG) are copied into docs/gallery/, and
 # docs/gallery.md shows them with the example's README paragraph.
 #
@@ -19,7 +19,7 @@ page=$scratch/gallery.md
   echo "# Gallery"
   echo
   echo "The paper's examples, redrawn for the project (\`assets/\`), each played through its timeline by"
-  echo "\`inbetween render --preview\` at 160 x 160 px: the animated preview (APNG), then the contact"
+  echo "\`inbetween render --preview --fps 12\` at 128 x 128 px: the animated preview (APNG), then the contact"
   echo "sheet of its frames. \`scripts/gallery.sh\` makes this page again."
 } > "$page"
 for readme in "$root"/assets/*/README.md; do
@@ -27,7 +27,7 @@ for readme in "$root"/assets/*/README.md; do
   name=$(basename "$dir")
   [ -f "$dir/scene.json" ] || continue
   echo "gallery.sh: $name" >&2
-  "$inbetween" render "$dir/scene.json" -o "$scratch/$name" --size 160x160 --background ffffff --preview --device cpu > /dev/null
+  "$inbetween" render "$dir/scene.json" -o "$scratch/$name" --size 128x128 --fps 12 --background ffffff --preview --device cpu > /dev/null
   cp "$scratch/$name/preview.png" "$out/$name.png"
   cp "$scratch/$name/contact_sheet.png" "$out/$name-sheet.png"
   {
