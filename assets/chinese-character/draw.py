@@ -139,31 +139,38 @@ def main():
     for n, t in (("ba", t_ba), ("ren", t_ren)):
         with open(os.path.join(HERE, n + ".svg"), "w") as f:
             f.write(t)
-    # the join in 人: where the na's outline crosses the pie's, upper and lower
-    xs = sorted(crossings(p_ren[0][0], p_ren[1][0]), key=lambda p: p[1])
+    # the join in 人: from corner to corner, where the na's ink outline crosses the pie's
+    # (the notch above the na's head and the V below it), so that every end is a corner of the
+    # outline and the cut leaves it at a wide angle
+    ink = lambda k: [stroke(p, lambda t, w=w: w(t) + 12)[0] for p, w in ((k[0], pie_w), (k[1], na_w))]
+    xs = sorted(crossings(*ink(REN)), key=lambda p: p[1])
     up, lo = xs[0], xs[-1]
-    def out(p, q, d=16.0):       # a crossing moved out of the overlap, onto the ink outline
-        m = ((up[0] + lo[0]) / 2, (up[1] + lo[1]) / 2)
-        v = (p[0] - m[0], p[1] - m[1]); l = math.hypot(*v)
-        return (p[0] + v[0] / l * d, p[1] + v[1] / l * d)
-    cut = [r(out(up, lo)), r(out(lo, up))]
+    cut = [r(up), r(lo)]
     # 八: the na's head (its start cap) and the stretch of the pie's right edge facing it
     na_pts = p_ba[1][1]; pie_pts = p_ba[0][1]
     h0 = na_pts[0]
-    def edge(pts, wf, t, side):
-        i = int(t * (len(pts) - 1)); a, b = pts[max(i - 1, 0)], pts[min(i + 1, len(pts) - 1)]
+    def edge1(pts, wf, i, side):  # the ink outline beside centre-line point i
+        a, b = pts[max(i - 1, 0)], pts[min(i + 1, len(pts) - 1)]
         dx, dy = b[0] - a[0], b[1] - a[1]; d = math.hypot(dx, dy)
-        w = wf(t) / 2 + 6
+        w = wf(i / (len(pts) - 1)) / 2 + 6
         return (pts[i][0] - side * dy / d * w, pts[i][1] + side * dx / d * w)
+    def edge(pts, wf, t, side):   # ... at t in [0, 1], between the points
+        s = t * (len(pts) - 1); i = min(int(s), len(pts) - 2); f = s - i
+        p, q = edge1(pts, wf, i, side), edge1(pts, wf, i + 1, side)
+        return (p[0] + f * (q[0] - p[0]), p[1] + f * (q[1] - p[1]))
+    ren_pie = p_ren[0][1]
+    def t_on(p):                 # the pie's parameter whose right edge point is nearest p
+        return min((k / 2000 for k in range(2001)), key=lambda t: math.dist(edge(ren_pie, pie_w, t, -1), p))
+    t_up, t_lo = t_on(up), t_on(lo)
     feats_ba = {"pie-head": r((pie_pts[0][0], pie_pts[0][1] - pie_w(0) / 2 - 6)),
                 "pie-tail": r(tip(pie_pts, pie_w)), "na-tail": r(tip(na_pts, na_w)),
                 "join.start.left": r(edge(na_pts, na_w, 0.0, -1)), "join.end.left": r(edge(na_pts, na_w, 0.0, 1)),
-                "join.start.right": r(edge(pie_pts, pie_w, 0.30, -1)), "join.end.right": r(edge(pie_pts, pie_w, 0.44, -1))}
+                "join.start.right": r(edge(pie_pts, pie_w, t_up, -1)), "join.end.right": r(edge(pie_pts, pie_w, t_lo, -1))}
     ren_pie = p_ren[0][1]; ren_na = p_ren[1][1]
     feats_ren = {"pie-head": r((ren_pie[0][0], ren_pie[0][1] - pie_w(0) / 2 - 6)),
                  "pie-tail": r(tip(ren_pie, pie_w)), "na-tail": r(tip(ren_na, na_w))}
     scene = {"version": 1, "reference": "ren", "edge_length": 11,
-             "solver": {"alpha": 0.5, "tau": 1e-06},
+             "solver": {"alpha": 0.5, "tau": 3e-07},
              "keys": [
                  {"name": "ba", "drawing": "ba.png", "features": feats_ba},
                  {"name": "ren", "drawing": "ren.png", "features": feats_ren,
