@@ -148,48 +148,48 @@ TEST_CASE("corners: an unknown \"corners\" value names the field and the values 
                                          Catch::Contains("\"off\""));
 }
 
+namespace {
+
+// The extreme-deformation targets (issue "Real drawings") on the scene built from its drawings
+// with Comesh: every key's smallest angle >= 10 deg with at most 2% of triangles under 20 deg, and
+// every map's MIPS maximum under 20.
+void checkExtremeDeformationTargets(const Scene& scene) {
+  SceneMultimeshOptions options;
+  options.useCache = false;
+  const SceneMultimesh built = sceneMultimesh(scene, options);
+  const MultimeshQuality quality = measureQuality(*built.multimesh);
+  for (size_t k = 0; k < quality.keys.size(); ++k) {
+    INFO("key " << scene.keys[k].name);
+    CHECK(quality.keys[k].smallestAngle >= 10);
+    CHECK(quality.keys[k].shareUnder20 <= 0.02);
+  }
+  for (const MapQuality& map : quality.maps) {
+    INFO("map " << scene.keys[map.from].name << " -> " << scene.keys[map.to].name);
+    CHECK(map.mipsMax < 20);
+  }
+}
+
+}  // namespace
+
 TEST_CASE("extreme deformation: the drawn wing flaps, leg swings and bending tails after Comesh have every key's smallest angle >= 10 deg, <= 2% under 20 deg, MIPS max < 20") {
   // bat512 pairs its armpits by itself; at 96 px they are too soft to be corners and the scene
   // places them as features (bat96.json, with the wing tips only, does not meet the targets).
   for (const char* name : {"bat/bat512.json", "bat/bat96-armpits.json", "leg/leg64.json", "leg/leg512.json",
                            "tail/tail96.json", "tail/tail512.json"}) {
     INFO("tests/drawn/" << name);
-    const Scene scene = loadScene(std::string(INBETWEEN_ASSETS "/../tests/drawn/") + name);
-    SceneMultimeshOptions options;
-    options.useCache = false;
-    const SceneMultimesh built = sceneMultimesh(scene, options);
-    const MultimeshQuality quality = measureQuality(*built.multimesh);
-    for (size_t k = 0; k < quality.keys.size(); ++k) {
-      INFO("key " << scene.keys[k].name);
-      CHECK(quality.keys[k].smallestAngle >= 10);
-      CHECK(quality.keys[k].shareUnder20 <= 0.02);
-    }
-    for (const MapQuality& map : quality.maps) {
-      INFO("map " << scene.keys[map.from].name << " -> " << scene.keys[map.to].name);
-      CHECK(map.mipsMax < 20);
-    }
+    checkExtremeDeformationTargets(loadScene(std::string(INBETWEEN_ASSETS "/../tests/drawn/") + name));
   }
 }
 
 TEST_CASE("extreme deformation: adding consistent features (the top and bottom of the bat's body) keeps the build working and within the targets") {
   for (const char* name : {"bat512", "bat96-armpits"}) {
     INFO("tests/drawn/bat/" << name << ".json with features crown and tail");
-    const std::string folder = INBETWEEN_ASSETS "/../tests/drawn/bat/";
-    Scene scene = loadScene(folder + name + ".json");
+    Scene scene = loadScene(std::string(INBETWEEN_ASSETS "/../tests/drawn/bat/") + name + ".json");
     const double s = std::string(name) == "bat512" ? 1.0 : 96.0 / 512;  // the body does not move between keys
     for (KeySpec& key : scene.keys) {
       key.features["crown"] = Eigen::Vector2d(256, 210) * s;
       key.features["tail"] = Eigen::Vector2d(256, 350) * s;
     }
-    SceneMultimeshOptions options;
-    options.useCache = false;
-    const SceneMultimesh built = sceneMultimesh(scene, options);
-    const MultimeshQuality quality = measureQuality(*built.multimesh);
-    for (size_t k = 0; k < quality.keys.size(); ++k) {
-      INFO("key " << scene.keys[k].name);
-      CHECK(quality.keys[k].smallestAngle >= 10);
-      CHECK(quality.keys[k].shareUnder20 <= 0.02);
-    }
-    for (const MapQuality& map : quality.maps) CHECK(map.mipsMax < 20);
+    checkExtremeDeformationTargets(scene);
   }
 }

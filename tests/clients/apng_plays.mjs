@@ -7,9 +7,8 @@
 // over the picture, within 0.01: shrinking keeps coverage).
 import fs from 'node:fs';
 import http from 'node:http';
-import os from 'node:os';
 import path from 'node:path';
-import { fail, need, usage } from './common.mjs';
+import { fail, launchChromium, usage } from './common.mjs';
 import { readPng } from './png.mjs';
 
 const args = process.argv.slice(2);
@@ -26,7 +25,6 @@ const coverage = (image) => {
   return sum / 255 / (image.width * image.height);
 };
 
-const { chromium } = await need('playwright-core');
 const server = http.createServer((request, response) => {
   if (new URL(request.url, 'http://localhost').pathname !== '/preview.png') {
     response.writeHead(200, { 'content-type': 'text/html' }).end('<!doctype html><title>apng</title>');
@@ -37,17 +35,10 @@ const server = http.createServer((request, response) => {
 });
 await new Promise((resolve) => server.listen(0, '127.0.0.1', resolve));
 const origin = `http://127.0.0.1:${server.address().port}`;
-const executablePath = process.env.INBETWEEN_CHROMIUM ?? ['/usr/lib/chromium/chromium', '/usr/bin/chromium'].find((p) => fs.existsSync(p));
-if (!executablePath) fail('no Chromium: install Debian\'s chromium (scripts/setup.sh) or set INBETWEEN_CHROMIUM');
-const profile = fs.mkdtempSync(path.join(os.tmpdir(), 'inbetween-chromium-'));
-let result, context;
+let result, browser;
 try {
-  context = await chromium.launchPersistentContext(profile, {
-    executablePath, headless: true,
-    args: ['--headless', '--no-sandbox', '--disable-gpu', '--no-first-run', '--disable-background-networking',
-           '--disable-component-update', '--disable-sync'],
-  });
-  const page = await context.newPage();
+  browser = await launchChromium();
+  const page = await browser.context.newPage();
   await page.goto(`${origin}/`);
   result = await page.evaluate(async () => {
     const data = await (await fetch('/preview.png')).arrayBuffer();
@@ -74,9 +65,8 @@ try {
 } catch (e) {
   fail(`Chromium could not decode ${preview}: ${e.message.split('\n')[0]}`);
 } finally {
-  await context?.close();
+  await browser?.close();
   server.close();
-  fs.rmSync(profile, { recursive: true, force: true });
 }
 
 if (!result.animated) fail(`${preview}: Chromium does not see an animation`);

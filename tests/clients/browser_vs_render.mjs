@@ -15,9 +15,8 @@
 // pixel off, no pointer plugin) to see the check fail.
 import fs from 'node:fs';
 import http from 'node:http';
-import os from 'node:os';
 import path from 'node:path';
-import { fail, here, need, usage, inbetweenExtras, compositeWeights, readJson } from './common.mjs';
+import { fail, here, launchChromium, usage, inbetweenExtras, compositeWeights, readJson } from './common.mjs';
 import { readPng, writePng } from './png.mjs';
 
 // Tolerances (units of 1 = 255), measured on square-arch-notch and pentagon-star recoloured
@@ -58,7 +57,6 @@ const rendered = frames.map((f) => {
   if (!fs.existsSync(png)) fail(`${png} does not exist (inbetween render's frame ${f})`);
   return readPng(png);
 });
-const { chromium } = await need('playwright-core');
 
 // The page and node_modules from tests/clients, the file (and anything beside it) under /model/.
 const modelDir = path.dirname(path.resolve(file));
@@ -78,18 +76,11 @@ const server = http.createServer((request, response) => {
 await new Promise((resolve) => server.listen(0, '127.0.0.1', resolve));
 const origin = `http://127.0.0.1:${server.address().port}`;
 
-const executablePath = process.env.INBETWEEN_CHROMIUM ?? ['/usr/lib/chromium/chromium', '/usr/bin/chromium'].find((p) => fs.existsSync(p));
-if (!executablePath) fail('no Chromium: install Debian\'s chromium (scripts/setup.sh) or set INBETWEEN_CHROMIUM');
-const profile = fs.mkdtempSync(path.join(os.tmpdir(), 'inbetween-chromium-'));
-let result, context;
+let result, browser;
 const problems = [];
 try {
-  context = await chromium.launchPersistentContext(profile, {
-    executablePath, headless: true,
-    args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run', '--disable-background-networking',
-           '--disable-component-update', '--disable-sync', '--use-angle=swiftshader', '--enable-unsafe-swiftshader'],
-  });
-  const page = await context.newPage();
+  browser = await launchChromium(['--disable-quic', '--use-angle=swiftshader', '--enable-unsafe-swiftshader']);
+  const page = await browser.context.newPage();
   page.on('pageerror', (e) => problems.push(`page error: ${e.message}`));
   // (ANGLE's "GPU stall due to ReadPixels" performance note is expected: we read every picture back.)
   page.on('console', (m) => {
@@ -106,9 +97,8 @@ try {
 } catch (e) {
   problems.push(e.message.split('\n')[0]);
 } finally {
-  await context?.close();
+  await browser?.close();
   server.close();
-  fs.rmSync(profile, { recursive: true, force: true });
 }
 if (!result) fail(`Chromium did not draw ${file}: ${problems.join('; ')}`);
 for (const p of problems) console.log(`  (browser) ${p}`);

@@ -2,6 +2,7 @@
 // after checking they are installed, so a missing `npm ci` says what to do), reading a glTF's
 // JSON and the drawing-pixel coordinates of the export's contract (docs/export.md).
 import fs from 'node:fs';
+import os from 'node:os';
 import path from 'node:path';
 import { fileURLToPath, pathToFileURL } from 'node:url';
 
@@ -74,4 +75,26 @@ export function compositeWeights(factors) {
     through *= 1 - factors[k];
   }
   return out;
+}
+
+// Debian's Chromium (or INBETWEEN_CHROMIUM), headless, in a fresh profile: { context, close() },
+// close() also removing the profile. `extraArgs` go on its command line after the shared ones.
+export async function launchChromium(extraArgs = []) {
+  const { chromium } = await need('playwright-core');
+  const executablePath = process.env.INBETWEEN_CHROMIUM ?? ['/usr/lib/chromium/chromium', '/usr/bin/chromium'].find((p) => fs.existsSync(p));
+  if (!executablePath) fail('no Chromium: install Debian\'s chromium (scripts/setup.sh) or set INBETWEEN_CHROMIUM');
+  const profile = fs.mkdtempSync(path.join(os.tmpdir(), 'inbetween-chromium-'));
+  const removeProfile = () => fs.rmSync(profile, { recursive: true, force: true });
+  let context;
+  try {
+    context = await chromium.launchPersistentContext(profile, {
+      executablePath, headless: true,
+      args: ['--headless', '--no-sandbox', '--disable-gpu', '--no-first-run', '--disable-background-networking',
+             '--disable-component-update', '--disable-sync', ...extraArgs],
+    });
+  } catch (e) {
+    removeProfile();
+    throw e;
+  }
+  return { context, close: async () => { await context.close(); removeProfile(); } };
 }
