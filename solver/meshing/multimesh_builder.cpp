@@ -7,7 +7,6 @@
 #include "meshing/shared_boundary.h"
 #include "meshing/stiffness_paint.h"
 
-#include <Eigen/SparseCholesky>
 #include <algorithm>
 #include <filesystem>
 #include <memory>
@@ -73,35 +72,6 @@ std::vector<int> outlineVertices(const SharedBoundary& boundary, const Reference
     if (!inside) out.push_back(static_cast<int>(v));
   }
   return out;
-}
-
-// Free vertices at the uniform-weight average of their neighbours (Tutte), locked ones (boundary,
-// interior features) fixed.
-void tutteInterior(const ReferenceMesh& mesh, const std::vector<char>& locked, Eigen::MatrixX2d& x) {
-  const int n = static_cast<int>(mesh.points.size());
-  std::vector<int> unknown(n, -1);
-  int count = 0;
-  for (int v = 0; v < n; ++v)
-    if (!locked[v]) unknown[v] = count++;
-  if (count == 0) return;
-  std::vector<Eigen::Triplet<double>> entries;
-  Eigen::MatrixX2d rhs = Eigen::MatrixX2d::Zero(count, 2);
-  for (const Triangle& t : mesh.triangles)
-    for (int c = 0; c < 3; ++c)
-      for (int d = 1; d < 3; ++d) {  // each triangle contributes each directed edge once per side
-        const int v = t[c], w = t[(c + d) % 3];
-        if (unknown[v] < 0) continue;
-        entries.emplace_back(unknown[v], unknown[v], 1.0);
-        if (unknown[w] >= 0) entries.emplace_back(unknown[v], unknown[w], -1.0);
-        else rhs.row(unknown[v]) += x.row(w);
-      }
-  Eigen::SparseMatrix<double> laplacian(count, count);
-  laplacian.setFromTriplets(entries.begin(), entries.end());
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(laplacian);
-  if (solver.info() != Eigen::Success) throw std::runtime_error("Tutte embedding: factorization failed");
-  const Eigen::MatrixX2d interior = solver.solve(rhs);
-  for (int v = 0; v < n; ++v)
-    if (unknown[v] >= 0) x.row(v) = interior.row(unknown[v]);
 }
 
 std::string formatLength(double px) {
@@ -171,7 +141,8 @@ Attempt mapKeys(const Scene& scene, const SharedBoundary& boundary, const Refere
     // Interior features: the reference key has them in place; every other key is mapped with them
     // free first, then they are moved to the key's placements (untangleToPins).
     const bool pinsMove = k != scene.reference && !mesh.interior.empty();
-    if (k != scene.reference) tutteInterior(mesh, onBoundary, x);
+    if (k != scene.reference && !harmonicFill(mesh.triangles, onBoundary, x))
+      throw std::runtime_error("Tutte embedding: factorization failed");
     if (k != scene.reference || smallestTriangleArea(mesh.triangles, x).first <= 0) {
       UntangleOptions untangleOptions = options.untangle;  // progress within the key: minutes at 100k vertices
       if (options.progress)

@@ -202,37 +202,45 @@ UntangleResult untangle(const std::vector<Triangle>& triangles, const Eigen::Mat
   return result;
 }
 
-namespace {
-
-// The uniform-weight harmonic extension of the moves of the `carried` vertices (a move per
-// vertex, rows of `move`) to the other free ones, the locked ones fixed: n x 2, px.
-Eigen::MatrixX2d harmonicSpread(const std::vector<Triangle>& triangles, const std::vector<char>& locked,
-                                const std::vector<char>& carried, const Eigen::MatrixX2d& move) {
-  const int n = static_cast<int>(move.rows());
+bool harmonicFill(const std::vector<Triangle>& triangles, const std::vector<char>& fixed, Eigen::MatrixX2d& x) {
+  const int n = static_cast<int>(x.rows());
   std::vector<int> unknown(n, -1);
   int count = 0;
   for (int v = 0; v < n; ++v)
-    if (!locked[v] && !carried[v]) unknown[v] = count++;
-  Eigen::MatrixX2d out = move;
-  if (count == 0) return out;
+    if (!fixed[v]) unknown[v] = count++;
+  if (count == 0) return true;
   std::vector<Eigen::Triplet<double>> entries;
   Eigen::MatrixX2d rhs = Eigen::MatrixX2d::Zero(count, 2);
   for (const Triangle& t : triangles)
     for (int c = 0; c < 3; ++c)
-      for (int d = 1; d < 3; ++d) {
+      for (int d = 1; d < 3; ++d) {  // each triangle contributes each directed edge once per side
         const int v = t[c], w = t[(c + d) % 3];
         if (unknown[v] < 0) continue;
         entries.emplace_back(unknown[v], unknown[v], 1.0);
         if (unknown[w] >= 0) entries.emplace_back(unknown[v], unknown[w], -1.0);
-        else rhs.row(unknown[v]) += move.row(w);
+        else rhs.row(unknown[v]) += x.row(w);
       }
   Eigen::SparseMatrix<double> laplacian(count, count);
   laplacian.setFromTriplets(entries.begin(), entries.end());
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(laplacian);
-  if (solver.info() != Eigen::Success) return out;
-  const Eigen::MatrixX2d spread = solver.solve(rhs);
+  if (solver.info() != Eigen::Success) return false;
+  const Eigen::MatrixX2d filled = solver.solve(rhs);
   for (int v = 0; v < n; ++v)
-    if (unknown[v] >= 0) out.row(v) = spread.row(unknown[v]);
+    if (unknown[v] >= 0) x.row(v) = filled.row(unknown[v]);
+  return true;
+}
+
+namespace {
+
+// The uniform-weight harmonic extension of the moves of the `carried` vertices (a move per
+// vertex, rows of `move`) to the other free ones, the locked ones fixed: n x 2, px. Where it
+// cannot be solved, the carried moves alone.
+Eigen::MatrixX2d harmonicSpread(const std::vector<Triangle>& triangles, const std::vector<char>& locked,
+                                const std::vector<char>& carried, const Eigen::MatrixX2d& move) {
+  std::vector<char> fixed(locked.size());
+  for (size_t v = 0; v < fixed.size(); ++v) fixed[v] = locked[v] || carried[v];
+  Eigen::MatrixX2d out = move;
+  if (!harmonicFill(triangles, fixed, out)) return move;
   return out;
 }
 

@@ -52,6 +52,11 @@ UntangleResult untangleToPins(const std::vector<Triangle>& triangles, const Eige
                               Eigen::MatrixX2d& positions, const std::vector<char>& locked, const std::vector<int>& pins,
                               const std::vector<Eigen::Vector2d>& targets, const UntangleOptions& options);
 
+// The uniform-weight (Tutte) harmonic fill: every vertex not `fixed` goes to the average of its
+// neighbours, the fixed ones stay (rows of x, n x 2). False, x unchanged, when the system cannot
+// be factorized (a free vertex with no path to a fixed one).
+bool harmonicFill(const std::vector<Triangle>& triangles, const std::vector<char>& fixed, Eigen::MatrixX2d& x);
+
 // The smallest signed area over triangles and where it is.
 std::pair<double, int> smallestTriangleArea(const std::vector<Triangle>& triangles, const Eigen::MatrixX2d& positions);
 
