@@ -6,6 +6,7 @@
 #include "player/player_ui.h"
 #include "player/player_window.h"
 #include "player/shortcuts.h"
+#include "testkit/command_run.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -28,22 +29,11 @@ namespace fs = std::filesystem;
 constexpr int kWidth = 960, kHeight = 600;
 const std::string kScene = std::string(INBETWEEN_ASSETS) + "/square-arch-notch/scene.json";
 
-struct Run {
-  int code = -1;
-  std::string output;  // stdout and stderr
-};
+using Run = test::CommandRun;
 
 // Runs `inbetween ARGS` (prefix: words before the command, e.g. env -u DISPLAY).
 Run inbetween(const std::string& args, const std::string& prefix = "") {
-  const std::string command = prefix + " " + INBETWEEN_CLI + " " + args + " 2>&1";
-  Run run;
-  FILE* pipe = popen(command.c_str(), "r");
-  REQUIRE(pipe);
-  char buffer[512];
-  while (fgets(buffer, sizeof buffer, pipe)) run.output += buffer;
-  const int status = pclose(pipe);
-  run.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return run;
+  return test::runCommand(prefix + " " + INBETWEEN_CLI + " " + args);
 }
 
 // A scripted run of `frames` frames of the square-arch-notch scene; returns its screenshot.

@@ -6,6 +6,7 @@
 #include "core/png_image.h"
 #include "player/player_window.h"
 #include "sprites.h"
+#include "testkit/command_run.h"
 #include "testkit/drawings.h"
 
 #include <nlohmann/json.hpp>
@@ -23,22 +24,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct Run {
-  int code = -1;
-  std::string output;  // stdout and stderr
-};
+using Run = test::CommandRun;
 
-Run inbetween(const std::string& args) {
-  const std::string command = std::string(INBETWEEN_CLI) + " " + args + " 2>&1";
-  Run run;
-  FILE* pipe = popen(command.c_str(), "r");
-  REQUIRE(pipe);
-  char buffer[512];
-  while (fgets(buffer, sizeof buffer, pipe)) run.output += buffer;
-  const int status = pclose(pipe);
-  run.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return run;
-}
+Run inbetween(const std::string& args) { return test::runCommand(std::string(INBETWEEN_CLI) + " " + args); }
 
 // A fresh folder holding a two-key scene (drawings a.png, b.png) with extra top-level `fields`
 // (each followed by a comma); returns the scene file's path.
