@@ -261,3 +261,17 @@ TEST_CASE("comesh: with remeshing off, vertex steps alone keep the topology and 
     CHECK(report.energyOut < report.energyIn * (1 - 1e-4));
   }
 }
+
+TEST_CASE("comesh: the sweep rule stops no later than outer_tol alone, the smallest angle within 1.5 degrees of it (or over 20) and the share under 20 degrees within 2 points, on every Comesh scene") {
+  for (const auto& [name, o] : optimizedScenes()) {
+    ComeshOptions paperOnly;
+    paperOnly.sweepTolerance = 0;
+    ComeshReport report;
+    const Multimesh reference = comeshOptimize(*o.built.multimesh, &o.built.boundary, paperOnly, &report);
+    INFO("scene " << name << ": " << o.report.outerIterations << " sweeps against " << report.outerIterations);
+    CHECK(o.report.outerIterations <= report.outerIterations);
+    const MultimeshQuality ours = measureQuality(o.result), paper = measureQuality(reference);
+    CHECK(smallestAngleOverKeys(ours) > std::min(smallestAngleOverKeys(paper) - 1.5, 20.0));
+    for (size_t k = 0; k < ours.keys.size(); ++k) CHECK(ours.keys[k].shareUnder20 < paper.keys[k].shareUnder20 + 0.02);
+  }
+}

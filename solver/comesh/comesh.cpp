@@ -266,6 +266,23 @@ std::vector<double> balancedOdtWeights(const ComeshMesh& mesh, const Remesher& r
   return weights;
 }
 
+// Triangles whose smallest angle is under 20 degrees, counted in every key.
+int thinTriangles(const ComeshMesh& mesh) {
+  const double cos20 = std::cos(20 * std::acos(-1.0) / 180);
+  int count = 0;
+  for (const Eigen::MatrixX2d& x : mesh.keys)
+    for (const Triangle& t : mesh.triangles) {
+      if (t[0] < 0) continue;
+      const double l0 = (x.row(t[1]) - x.row(t[0])).squaredNorm(), l1 = (x.row(t[2]) - x.row(t[1])).squaredNorm(),
+                   l2 = (x.row(t[0]) - x.row(t[2])).squaredNorm();
+      const double shortest = std::min({l0, l1, l2}), sum = l0 + l1 + l2;
+      const double other = sum - shortest - std::max({l0, l1, l2}), longest = std::max({l0, l1, l2});
+      // Law of cosines at the angle facing the shortest edge.
+      if ((other + longest - shortest) / (2 * std::sqrt(other * longest)) > cos20) ++count;
+    }
+  return count;
+}
+
 }  // namespace
 
 Multimesh comeshOptimize(const Multimesh& input, const ComeshBoundary* boundary, const ComeshOptions& options,
@@ -292,6 +309,7 @@ Multimesh comeshOptimize(const Multimesh& input, const ComeshBoundary* boundary,
   // and outer_tol means the same for any number of keys (relative to key i's part instead, each
   // key's share shrinks as 1 / m and 16 keys had to converge about 8 times tighter than 2).
   double objective = r.energyIn;
+  int fewestThin = std::numeric_limits<int>::max(), stalled = 0;
   for (int outer = 0; outer < options.outerIterations; ++outer) {
     r.outerIterations = outer + 1;
     double total = 0;
@@ -315,9 +333,17 @@ Multimesh comeshOptimize(const Multimesh& input, const ComeshBoundary* boundary,
       }
       total += innerResidual;
     }
+    const double before = objective;
     objective = comeshEnergy(mesh.triangles, mesh.keys, odtWeights);
     if (options.progress) options.progress(outer + 1, objective);
     if (total < options.outerTolerance) break;
+    if (options.sweepTolerance > 0) {
+      const int thin = thinTriangles(mesh);
+      const bool better = thin < fewestThin;
+      fewestThin = std::min(fewestThin, thin);
+      stalled = (!better && before - objective < options.sweepTolerance * before) ? stalled + 1 : 0;
+      if (stalled >= options.sweepPatience) break;
+    }
   }
   Multimesh out = mesh.toMultimesh();
   r.verticesOut = out.vertexCount();

@@ -20,6 +20,14 @@ struct ComeshOptions {
   int innerIterations = 100;     // paper: max_inner_itr. Default 100.
   double outerTolerance = 1e-6;  // paper: outer_tol, on the sum over keys of the largest inner residual. Default 1e-6.
   double innerTolerance = 1e-7;  // paper: inner_tol, on one step's relative energy decrease. Default 1e-7.
+  // Also stop once `sweepPatience` sweeps over the keys in a row have each lowered eq. 8 by less
+  // than this fraction of it and left no fewer thin triangles (smallest angle under 20 degrees,
+  // counted over all keys) than the best sweep before. The paper's outer_tol, on our sub_res, keeps
+  // going long after the meshes stop improving: on the bundled scenes this stops 1.5 to 3 times
+  // sooner with the same angles and MIPS (docs/benchmarks.md, "bench examples"). 0: never.
+  // Default 1e-3.
+  double sweepTolerance = 1e-3;
+  int sweepPatience = 3;  // sweeps; default 3
   // Weight of each key's ODT term (eq. 4 over the key's area) relative to the MIPS terms, in
   // units of the key's area over its squared mean edge length. As printed, eq. 8 weighs ODT by 1,
   // and MIPS (about twice the area) then outweighs ODT (about a quarter of the squared edge
