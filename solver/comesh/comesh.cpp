@@ -3,10 +3,13 @@
 #include "comesh/comesh_block_energy.h"
 #include "comesh/comesh_energy.h"
 #include "comesh/comesh_preconditioner.h"
+#include "multimesh/mesh_quality.h"
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <omp.h>
 
@@ -268,18 +271,10 @@ std::vector<double> balancedOdtWeights(const ComeshMesh& mesh, const Remesher& r
 
 // Triangles whose smallest angle is under 20 degrees, counted in every key.
 int thinTriangles(const ComeshMesh& mesh) {
-  const double cos20 = std::cos(20 * std::acos(-1.0) / 180);
+  std::vector<Triangle> live;
+  std::copy_if(mesh.triangles.begin(), mesh.triangles.end(), std::back_inserter(live), [](const Triangle& t) { return t[0] >= 0; });
   int count = 0;
-  for (const Eigen::MatrixX2d& x : mesh.keys)
-    for (const Triangle& t : mesh.triangles) {
-      if (t[0] < 0) continue;
-      const double l0 = (x.row(t[1]) - x.row(t[0])).squaredNorm(), l1 = (x.row(t[2]) - x.row(t[1])).squaredNorm(),
-                   l2 = (x.row(t[0]) - x.row(t[2])).squaredNorm();
-      const double shortest = std::min({l0, l1, l2}), sum = l0 + l1 + l2;
-      const double other = sum - shortest - std::max({l0, l1, l2}), longest = std::max({l0, l1, l2});
-      // Law of cosines at the angle facing the shortest edge.
-      if ((other + longest - shortest) / (2 * std::sqrt(other * longest)) > cos20) ++count;
-    }
+  for (const Eigen::MatrixX2d& x : mesh.keys) count += keyQuality(live, x).under20;
   return count;
 }
 

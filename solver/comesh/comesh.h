@@ -23,8 +23,8 @@ struct ComeshOptions {
   // Also stop once `sweepPatience` sweeps over the keys in a row have each lowered eq. 8 by less
   // than this fraction of it and left no fewer thin triangles (smallest angle under 20 degrees,
   // counted over all keys) than the best sweep before. The paper's outer_tol, on our sub_res, keeps
-  // going long after the meshes stop improving: on the bundled scenes this stops 1.5 to 3 times
-  // sooner with the same angles and MIPS (docs/benchmarks.md, "bench examples"). 0: never.
+  // going long after the meshes stop improving: on the bundled scenes this is 1.2 to 3.6 times
+  // faster with the same angles and MIPS within noise (docs/benchmarks.md, "bench examples"). 0: never.
   // Default 1e-3.
   double sweepTolerance = 1e-3;
   int sweepPatience = 3;  // sweeps; default 3

@@ -20,20 +20,6 @@ double smallestAngleDegrees(const Eigen::Vector2d& a, const Eigen::Vector2d& b, 
   return smallest;
 }
 
-KeyQuality keyQuality(const std::vector<Triangle>& triangles, const Eigen::MatrixX2d& x) {
-  KeyQuality q;
-  q.smallestAngle = 180;
-  for (const Triangle& t : triangles) {
-    const double angle = smallestAngleDegrees(x.row(t[0]), x.row(t[1]), x.row(t[2]));
-    q.smallestAngle = std::min(q.smallestAngle, angle);
-    q.meanSmallestAngle += angle;
-    q.shareUnder20 += angle < 20;
-  }
-  q.meanSmallestAngle /= std::max<size_t>(triangles.size(), 1);
-  q.shareUnder20 /= std::max<size_t>(triangles.size(), 1);
-  return q;
-}
-
 MapQuality mapQuality(const std::vector<Triangle>& triangles, const Eigen::MatrixX2d& from, const Eigen::MatrixX2d& to) {
   MapQuality q;
   double area = 0;
@@ -52,6 +38,20 @@ MapQuality mapQuality(const std::vector<Triangle>& triangles, const Eigen::Matri
 }
 
 }  // namespace
+
+KeyQuality keyQuality(const std::vector<Triangle>& triangles, const Eigen::MatrixX2d& x) {
+  KeyQuality q;
+  q.smallestAngle = 180;
+  for (const Triangle& t : triangles) {
+    const double angle = smallestAngleDegrees(x.row(t[0]), x.row(t[1]), x.row(t[2]));
+    q.smallestAngle = std::min(q.smallestAngle, angle);
+    q.meanSmallestAngle += angle;
+    q.under20 += angle < 20;
+  }
+  q.meanSmallestAngle /= std::max<size_t>(triangles.size(), 1);
+  q.shareUnder20 = static_cast<double>(q.under20) / std::max<size_t>(triangles.size(), 1);
+  return q;
+}
 
 MultimeshQuality measureQuality(const Multimesh& mesh) {
   MultimeshQuality q;

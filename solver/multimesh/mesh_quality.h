@@ -12,6 +12,7 @@ struct KeyQuality {
   double smallestAngle = 0;   // degrees, over all triangles
   double meanSmallestAngle = 0;  // degrees: mean over triangles of each triangle's smallest angle
   double shareUnder20 = 0;    // fraction of triangles whose smallest angle is under 20 degrees
+  int under20 = 0;            // how many triangles those are
 };
 
 // MIPS of the map from key `from` to key `to`, per triangle s1/s2 + s2/s1 (2 when conformal).
@@ -27,5 +28,8 @@ struct MultimeshQuality {
 };
 
 MultimeshQuality measureQuality(const Multimesh& mesh);
+
+// The angles of `triangles` at positions x (vertices x 2, px), e.g. one key of a mesh being edited.
+KeyQuality keyQuality(const std::vector<Triangle>& triangles, const Eigen::MatrixX2d& x);
 
 }  // namespace ib
