@@ -136,7 +136,7 @@ TEST_CASE("examples: cell-splitting's cells touch at the first key and are apart
   CHECK(widest > 0.05 * size);
 }
 
-TEST_CASE("examples: circles-in-circles keeps its circles apart in every frame with non-overlap, and not without") {
+TEST_CASE("examples: circles-in-circles keeps its circles apart in every frame with non-overlap, each frame converged and unfolded, and not without") {
   const Scene scene = loadScene(exampleFile("circles-in-circles"));
   REQUIRE(scene.solver.nonOverlap);
   const Multimesh& mesh = *optimized("circles-in-circles").multimesh;
@@ -145,8 +145,15 @@ TEST_CASE("examples: circles-in-circles keeps its circles apart in every frame w
   REQUIRE(count >= 2);
   const std::vector<PieceEdge> edges = boundaryEdges(mesh, piece);
   int crossing = 0;
-  for (const AnimationFrame& frame : play(scene, mesh, interpolationParams(scene.solver))) crossing += piecesCross(edges, frame.x);
+  int unconverged = 0, folded = 0;
+  for (const AnimationFrame& frame : play(scene, mesh, interpolationParams(scene.solver))) {
+    crossing += piecesCross(edges, frame.x);
+    unconverged += !frame.converged;
+    for (const Triangle& t : mesh.triangles()) folded += signedArea(frame.x, t) <= 0;
+  }
   CHECK(crossing == 0);
+  CHECK(unconverged == 0);
+  CHECK(folded == 0);
   SceneSolverParams without = scene.solver;
   without.nonOverlap = false;
   Scene plain = scene;
