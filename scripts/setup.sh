@@ -4,7 +4,8 @@
 # INBETWEEN_WERROR=ON in the environment makes compiler warnings errors (.ci/run sets it);
 # INBETWEEN_ENGINE=OFF installs and builds the solver alone (no Vulkan, GLFW, ImGui, Xvfb or Chromium).
 # Both install the npm packages of the export's client checks (tests/clients, pinned by its
-# package-lock.json) into tests/clients/node_modules.
+# package-lock.json) into tests/clients/node_modules. INBETWEEN_SETUP_ONLY=1 installs and stops
+# there (scripts/sanitize.sh, scripts/fuzz.sh configure their own builds).
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 build=${1:-"$here/build"}
@@ -14,6 +15,7 @@ packages=(
   libeigen3-dev libmetis-dev libopenmesh-dev catch2 nlohmann-json3-dev
   libcgal-dev libpotrace-dev libpng-dev
   libtinygltf-dev libstb-dev libmeshoptimizer-dev
+  clang-14 libclang-rt-14-dev libomp-14-dev  # the sanitizer and fuzz builds (scripts/sanitize.sh, fuzz.sh)
 )
 engine_packages=(
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers glslang-tools
@@ -43,6 +45,8 @@ if [ ! -d "$clients/node_modules" ] || [ "$clients/package-lock.json" -nt "$clie
   (cd "$clients" && npm ci --no-audit --no-fund)
   touch "$clients/node_modules"
 fi
+
+[ -z "${INBETWEEN_SETUP_ONLY:-}" ] || exit 0
 
 options=(-DCMAKE_BUILD_TYPE=Release)
 [ -z "${INBETWEEN_WERROR:-}" ] || options+=("-DINBETWEEN_WERROR=$INBETWEEN_WERROR")

@@ -2,6 +2,7 @@
 // with the validation layer: the command fails (exit 1) on any validation message, so every run
 // here that exits 0 was silent. Reloading and saving drive the player's window in-process. Screenshots are read back and checked pixel by pixel against the
 // drawings, mapped through the player's own layout (canvasRect, ViewNavigation).
+#include "animation/frame_stream.h"
 #include "core/png_image.h"
 #include "player/player_ui.h"
 #include "player/player_window.h"
@@ -243,18 +244,11 @@ TEST_CASE("play: Save parameters writes the tuned values into the scene, which t
   const std::string path = (dir / "scene.json").string();
   constexpr int kFrame = 18;  // the notch opening: where tau matters
   play::PlayerSession tuned(std::make_unique<play::SceneReloader>(path), {});
+  const Scene original = tuned.scene().scene;
   tuned.parameters().set("tau", 0.004);
   tuned.parameters().set("lambda", 2500);
   tuned.update(0);
-  // Both sessions solve the timeline from its start before going to the frame, so frame 18 comes
-  // from the stream in both: a frame solved cold near the notch's release can settle in the
-  // energy's other minimum (FrameStream::seek), and which one the worker does first depends on timing.
   REQUIRE(tuned.worker().waitIdle(120));
-  tuned.transport().goTo(kFrame);
-  tuned.update(0);
-  REQUIRE(tuned.worker().waitIdle(120));
-  const std::shared_ptr<const AnimationFrame> before = tuned.worker().cached(kFrame);
-  REQUIRE(before);
   tuned.saveParameters();
   REQUIRE_FALSE(hasMessage(tuned, true));
 
@@ -262,18 +256,27 @@ TEST_CASE("play: Save parameters writes the tuned values into the scene, which t
   CHECK(saved.parameters().get("tau") == 0.004);
   CHECK(saved.parameters().get("lambda") == 2500);
   for (const play::Parameter& p : saved.parameters().all()) CHECK(p.value == p.initial);
-  saved.update(0);
-  REQUIRE(saved.worker().waitIdle(120));
-  saved.transport().goTo(kFrame);
-  saved.update(0);
-  REQUIRE(saved.worker().waitIdle(120));
-  const std::shared_ptr<const AnimationFrame> after = saved.worker().cached(kFrame);
-  REQUIRE(after);
-  // The same multimesh and parameters: the same frame within what the solver's tolerance allows at
-  // a cut that is opening. Not bit for bit: which frames the worker solves first, and so which warm
-  // starts and checkpoints frame 18 comes from, depends on timing (seen on CI runs: 0.001, 0.06 and
-  // 0.12 px apart), while tau 0.004 and lambda 2500 against the defaults move frame 18 by 11.9 px.
-  CHECK((after->x - before->x).cwiseAbs().maxCoeff() < 1.0);
+  // The frames themselves, played from the timeline's start as a stream: the worker's frames near
+  // the notch's release depend on which frames it happened to solve first (a frame solved cold
+  // there settles up to 18 px away, in the energy's other minimum), so they are compared here
+  // through the stream, which is deterministic. The saved scene plays what the tuned session
+  // solves, and the tuning is visible there (11.9 px at frame 18).
+  const Multimesh& mesh = *saved.scene().mesh;
+  const auto frameOf = [&](const Scene& scene, const InterpolationParams& params) {
+    FrameStream stream(mesh, scene.timeline, params, SolverOptions{}, scene.dynamics);
+    AnimationFrame frame = stream.next();
+    while (frame.index < kFrame && !stream.done()) frame = stream.next();
+    REQUIRE(frame.index == kFrame);
+    return frame.x;
+  };
+  InterpolationParams tunedParams = interpolationParams(original.solver);
+  tunedParams.cohesive.tau = 0.004;
+  tunedParams.cohesive.lambda = 2500;
+  const Eigen::MatrixX2d fromSaved = frameOf(saved.scene().scene, interpolationParams(saved.scene().scene.solver));
+  // Within 1e-3 px, not bit for bit: with the tuned session's worker busy beside it, two plays
+  // of the stream came 5.8e-6 px apart (seen once in five runs).
+  CHECK((fromSaved - frameOf(original, tunedParams)).cwiseAbs().maxCoeff() < 1e-3);
+  CHECK((fromSaved - frameOf(original, interpolationParams(original.solver))).cwiseAbs().maxCoeff() > 5.0);
 }
 
 TEST_CASE("play: the keyboard shortcuts drive the transport, weights mode, the overlays and closing", "[.window]") {

@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# Builds inbetween with sanitizers and runs the test suite under them. Usage:
+#   scripts/sanitize.sh address [BUILD_DIR]   AddressSanitizer + UndefinedBehaviorSanitizer, the whole
+#                                             suite (default BUILD_DIR: build-asan)
+#   scripts/sanitize.sh thread [BUILD_DIR]    ThreadSanitizer with clang and LLVM's OpenMP (Archer tells
+#                                             it about OpenMP's barriers): the tests of the player's
+#                                             solve worker, the live solver and the solver's parallel
+#                                             regions (default BUILD_DIR: build-tsan)
+# Any finding fails the test it happens in. Installs the packages first (scripts/setup.sh).
+set -euo pipefail
+here=$(cd "$(dirname "$0")/.." && pwd)
+kind=${1:-address}
+case "$kind" in
+  address) build=${2:-"$here/build-asan"} ;;
+  thread) build=${2:-"$here/build-tsan"} ;;
+  *) echo "sanitize.sh: '$kind' is not address or thread" >&2; exit 2 ;;
+esac
+
+INBETWEEN_SETUP_ONLY=1 "$here/scripts/setup.sh"
+
+options=(-DCMAKE_BUILD_TYPE=Release)
+[ -z "${INBETWEEN_WERROR:-}" ] || options+=("-DINBETWEEN_WERROR=$INBETWEEN_WERROR")
+if [ "$kind" = address ]; then
+  options+=(-DINBETWEEN_SANITIZE=address,undefined)
+  # Mesa's lavapipe, the Vulkan loader and X keep allocations for the life of the process; the
+  # leak check covers our code and suppresses theirs (scripts/lsan.supp).
+  export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1"
+  export LSAN_OPTIONS="suppressions=$here/scripts/lsan.supp:print_suppressions=0"
+  export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+else
+  options+=(-DINBETWEEN_SANITIZE=thread -DCMAKE_CXX_COMPILER=clang++-14 -DINBETWEEN_ENGINE=ON)
+  archer=/usr/lib/llvm-14/lib/libarcher.so
+  export OMP_TOOL_LIBRARIES="$archer"
+  export TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1:suppressions=$here/scripts/tsan.supp"
+fi
+cmake -S "$here" -B "$build" "${options[@]}"
+cmake --build "$build" -j "$(nproc)"
+if [ "$kind" = address ]; then
+  ctest --test-dir "$build" --output-on-failure -j "$(nproc)" --timeout 1500
+else
+  ctest --test-dir "$build" --output-on-failure -j "$(nproc)" --timeout 1500 \
+    -R "solve worker|live solver|frame stream|thread|parallel|play:|window: inbetween play"
+fi
