@@ -16,6 +16,7 @@ packages=(
   libcgal-dev libpotrace-dev libpng-dev
   libtinygltf-dev libstb-dev libmeshoptimizer-dev
   clang-14 libclang-rt-14-dev libomp-14-dev  # the sanitizer and fuzz builds (scripts/sanitize.sh, fuzz.sh)
+  strace  # the tests that kill a command in the middle of its writes
 )
 engine_packages=(
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers glslang-tools

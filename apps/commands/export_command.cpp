@@ -95,7 +95,8 @@ int runExport(const std::vector<std::string>& rawArgs) {
 
   gltf::checkGltfPath(output, "-o");  // before the long work: fail fast on a wrong name
   const Scene scene = loadScene(scenePath);
-  for (const std::string& note : sceneNotes(scene)) std::fprintf(stderr, "inbetween: note: %s\n", note.c_str());
+  // Printed once the export succeeded: a failed run says one thing, its error.
+  const std::vector<std::string> notes = sceneNotes(scene);
   std::vector<RgbaImage> drawings = readKeyDrawings(scene);
   options.sampling = sampling.value_or(nearestSampling(scene, drawings) ? render::Sampling::kNearest : render::Sampling::kLinear);
   Timeline timeline = scene.timeline;
@@ -152,6 +153,7 @@ int runExport(const std::vector<std::string>& rawArgs) {
   std::printf("size: %s (%zu bytes); every frame as 32-bit floats: %s (%zu bytes)\n", humanBytes(report.bytes).c_str(),
               report.bytes, humanBytes(report.bytesRaw).c_str(), report.bytesRaw);
   std::printf("wrote %s\n", output.c_str());
+  for (const std::string& note : notes) std::fprintf(stderr, "inbetween: note: %s\n", note.c_str());
   return 0;
 }
 

@@ -9,7 +9,10 @@ namespace ib {
 
 RgbaImage readPng(const std::string& path) {
   // Read through memory: a missing file then gets the same clear message as everywhere else.
-  const std::string bytes = readFile(path);
+  return decodePng(readFile(path), path);
+}
+
+RgbaImage decodePng(const std::string& bytes, const std::string& path) {
   png_image image{};
   image.version = PNG_IMAGE_VERSION;
   if (!png_image_begin_read_from_memory(&image, bytes.data(), bytes.size()))
@@ -18,10 +21,14 @@ RgbaImage readPng(const std::string& path) {
   out.width = static_cast<int>(image.width);
   out.height = static_cast<int>(image.height);
   out.hasAlpha = (image.format & PNG_FORMAT_FLAG_ALPHA) != 0;
-  if (out.width <= 0 || out.height <= 0 || static_cast<double>(out.width) * out.height > 1 << 28) {
+  // Checked before anything is allocated: a header can declare any size. 8192 x 8192 (256 MiB as
+  // RGBA) is four times the largest artwork the tool is for; tracing and meshing more would not
+  // finish in reasonable time anyway.
+  constexpr double kMostPixels = 8192.0 * 8192.0;
+  if (out.width <= 0 || out.height <= 0 || static_cast<double>(out.width) * out.height > kMostPixels) {
     png_image_free(&image);
     throw InputError(path + ": PNG size " + std::to_string(image.width) + " x " + std::to_string(image.height) +
-                     " is out of range (1 to 2^28 pixels)");
+                     " is out of range (at most 8192 x 8192 pixels in all): scale the drawing down");
   }
   image.format = PNG_FORMAT_RGBA;
   out.pixels.resize(PNG_IMAGE_SIZE(image));

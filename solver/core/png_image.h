@@ -19,6 +19,8 @@ struct RgbaImage {
 
 // Throws InputError naming the path: missing, unreadable, not a PNG, corrupt or truncated.
 RgbaImage readPng(const std::string& path);
+// The same from the file's bytes; `path` names them in messages.
+RgbaImage decodePng(const std::string& bytes, const std::string& path);
 
 // PNG file bytes of an RGBA image (for tests and pictures).
 std::string encodePng(const RgbaImage& image);

@@ -20,6 +20,7 @@ std::vector<std::pair<int, int>> meshEdges(const Multimesh& mesh) {
 
 const Multimesh& validated(const Multimesh& mesh) {
   mesh.validate();
+  validateStiffness(mesh.stiffnesses(), mesh.triangleCount());  // the range H's factorization holds
   return mesh;
 }
 

@@ -5,6 +5,7 @@
 #include "core/error.h"
 
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 
@@ -24,10 +25,14 @@ void validateStiffness(const Eigen::VectorXd& kappa, int triangleCount) {
   if (kappa.size() != triangleCount)
     throw std::invalid_argument("stiffness: expected " + std::to_string(triangleCount) + " values (one per triangle), got " +
                                 std::to_string(kappa.size()));
+  // 1e-9 to 1e9: far past what a scene (kappa up to 1e6, painted) and the player's kappa_scale
+  // (0.01 to 100) make, and within what H's factorization holds: at 1e300 H overflows.
   for (Eigen::Index k = 0; k < kappa.size(); ++k)
-    if (!(std::isfinite(kappa(k)) && kappa(k) > 0))
-      throw InputError("stiffness: kappa[" + std::to_string(k) + "] = " + std::to_string(kappa(k)) +
-                       " must be a finite number > 0");
+    if (!(kappa(k) >= 1e-9 && kappa(k) <= 1e9)) {
+      char value[32];
+      std::snprintf(value, sizeof value, "%g", kappa(k));
+      throw InputError("stiffness: kappa[" + std::to_string(k) + "] = " + value + " must be a number in [1e-9, 1e9]");
+    }
 }
 
 void Interpolator::Impl::forgetHistory() {

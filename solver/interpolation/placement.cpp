@@ -137,7 +137,8 @@ void alignAll(Eigen::MatrixX2d& x, const Eigen::MatrixX2d& target, const RowSpli
     for (const auto& c : centroids)
       for (int k = 0; k < 4; ++k) centre[k] += c[k];
     for (double& c : centre) c /= count;
-    const auto [cx, cy, qx, qy] = centre;
+    // Plain variables, not a structured binding: clang cannot use a binding inside omp simd.
+    const double cx = centre[0], cy = centre[1], qx = centre[2], qy = centre[3];
     for (int p = self; p < blocks; p += team) {
       double dot = 0, cross = 0;
 #pragma omp simd reduction(+ : dot, cross)

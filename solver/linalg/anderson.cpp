@@ -76,7 +76,9 @@ void AndersonAcceleration::next(const Eigen::Ref<const Eigen::VectorXd>& gx,
 #pragma omp parallel num_threads(blocks)
   for (int p = omp_get_thread_num(); p < blocks; p += omp_get_num_threads()) {
     double gramRow[kMaxDepth] = {}, projected[kMaxDepth] = {};
-    const auto [firstInPart, count] = block(p);
+    // Plain variables, not a structured binding: clang cannot use a binding in an omp simd loop.
+    const auto bounds = block(p);
+    const Eigen::Index firstInPart = bounds.first, count = bounds.second;
     for (int segment = 0; segment < segments; ++segment) {
       const Eigen::Index first = segment * part + firstInPart;
       const double* fb = f.data() + first;

@@ -32,6 +32,30 @@ void CholeskyPreconditioner::setPreordered(std::vector<int> partStart) {
   analysis_->analyzed = analysis_->preorderedAnalyzed = false;
 }
 
+namespace {
+
+// Factorizes H, and where rounding leaves a pivot <= 0 (stiffness contrasts near the limits
+// Interpolator accepts, 1e-9 to 1e9, make H that ill-conditioned), H + delta I with delta from
+// 1e-12 to 1e-3 of H's largest diagonal entry: the factor then steps a little shorter along
+// H's weakest directions, and the solver's energy safeguards keep every step a descent. Throws when
+// even that fails (H not positive definite at all: a bug upstream).
+template <typename Solver>
+void factorizeShifted(Solver& llt, const Eigen::SparseMatrix<double>& H) {
+  llt.setShift(0.0);
+  llt.factorize(H);
+  if (llt.info() == Eigen::Success) return;
+  const double largest = H.diagonal().cwiseAbs().maxCoeff();
+  for (double fraction = 1e-12; fraction <= 1e-3 && std::isfinite(largest) && largest > 0; fraction *= 1e3) {
+    llt.setShift(fraction * largest);
+    llt.factorize(H);
+    if (llt.info() == Eigen::Success) return;
+  }
+  llt.setShift(0.0);
+  throw std::runtime_error("global matrix is not positive definite");
+}
+
+}  // namespace
+
 void CholeskyPreconditioner::factorize(const Eigen::SparseMatrix<double>& H) {
   exactValues_ = nullptr;  // overwritten below; set again once the factorization succeeds
   if (!partStart_.empty()) {
@@ -42,8 +66,7 @@ void CholeskyPreconditioner::factorize(const Eigen::SparseMatrix<double>& H) {
       llt.analyzePattern(H);
       analysis_->preorderedAnalyzed = true;
     }
-    llt.factorize(H);
-    if (llt.info() != Eigen::Success) throw std::runtime_error("global matrix is not positive definite");
+    factorizeShifted(llt, H);
     n_ = static_cast<int>(H.rows());
     adopt(llt.matrixL().nestedExpression(), nullptr, first);
     return;
@@ -54,8 +77,7 @@ void CholeskyPreconditioner::factorize(const Eigen::SparseMatrix<double>& H) {
     llt.analyzePattern(H);
     analysis_->analyzed = true;
   }
-  llt.factorize(H);
-  if (llt.info() != Eigen::Success) throw std::runtime_error("global matrix is not positive definite");
+  factorizeShifted(llt, H);
   n_ = static_cast<int>(H.rows());
   adopt(llt.matrixL().nestedExpression(), first ? llt.permutationP().indices().data() : nullptr, first);
 }
@@ -75,8 +97,7 @@ void CholeskyPreconditioner::factorizeInOrder(const Eigen::SparseMatrix<double>&
   auto& ordered = analysis_->ordered;
   exactValues_ = nullptr;
   ordered.analyzePattern(permuted);
-  ordered.factorize(permuted);
-  if (ordered.info() != Eigen::Success) throw std::runtime_error("global matrix is not positive definite");
+  factorizeShifted(ordered, permuted);
   analysis_->analyzed = analysis_->preorderedAnalyzed = false;  // a later factorize() analyzes afresh
   n_ = n;
   adopt(ordered.matrixL().nestedExpression(), P.indices().data(), true);

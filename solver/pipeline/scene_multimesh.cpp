@@ -74,6 +74,8 @@ bool cacheIsCurrent(const Scene& scene, const fs::path& cache) {
 
 // A PNG's width and height from its header, or nothing when the file is not a readable PNG.
 std::optional<std::array<int, 2>> pngSize(const std::string& path) {
+  std::error_code error;
+  if (!fs::is_regular_file(path, error)) return std::nullopt;  // a pipe would block the read
   std::ifstream in(path, std::ios::binary);
   unsigned char head[24] = {};
   if (!in.read(reinterpret_cast<char*>(head), sizeof head)) return std::nullopt;

@@ -239,6 +239,8 @@ Scene parseScene(const std::string& source, const std::string& path) {
     j = json::parse(source);
   } catch (const json::parse_error& e) {
     throw at.error(std::string("malformed JSON: ") + e.what());
+  } catch (const json::out_of_range& e) {  // a number past the doubles (1e999)
+    throw at.error(std::string("malformed JSON: a number too large for a double: ") + e.what());
   }
   requireObject(j, at,
                 {"version", "reference", "edge_length", "max_vertices", "corners", "sampling", "tracing", "solver", "keys", "timeline",
