@@ -86,6 +86,15 @@ std::string crossingCuts() {
                   "x.start": [30, 70], "x.end": [98, 70]}}]})";
 }
 
+// square-arch-notch with the notch's two sides swapped in the arch: its features then run around
+// the outline in another order than in the square.
+std::string featuresSwapped() {
+  nlohmann::json scene = nlohmann::json::parse(sceneWith({"version"}, "1"));
+  nlohmann::json& features = scene["keys"][1]["features"];
+  std::swap(features["split.left"], features["split.right"]);
+  return scene.dump();
+}
+
 struct BadInput {
   std::string name;     // the test's words
   std::string scene;    // scene file to run on
@@ -154,6 +163,9 @@ const std::vector<BadInput>& badInputs() {
         {"a negative tau", scene("negative-tau", sceneWith({"solver", "tau"}, "-1")), "solver: tau"},
         {"an infinite gravity", scene("infinite-gravity", sceneWith({"dynamics", "gravity"}, "[0, 1e999]")), "malformed JSON: a number too large"},
         {"cuts that cross each other", scene("crossing-cuts", crossingCuts()), "cut .x.: leaves the shape.*crosses the outline"},
+        {"features in different orders",
+         scene("feature-order", featuresSwapped()),
+         "outlines do not match"},
         {"a multimesh file cut in half", kGoodScene, "half.ibmesh", "--mesh " + (kRoot / "half.ibmesh").string()},
         {"a multimesh file with a wrong checksum", kGoodScene, "wrong-checksum.ibmesh.*checksum",
          "--mesh " + (kRoot / "wrong-checksum.ibmesh").string()},

@@ -31,6 +31,27 @@ DocumentInput inputFor(const BakedAnimation& baked, const render::RenderMesh& me
   return in;
 }
 
+// The baked animation is one the writer can store: a time, positions (n x 2, finite) and weights
+// (one per key, >= 0, not all 0) for every frame, times finite and not decreasing, a positive frame rate.
+// A caller's mistake, not the user's (found by the fuzz target: mismatched sizes read past arrays).
+void checkBaked(const BakedAnimation& baked, const render::RenderMesh& mesh) {
+  const size_t frames = baked.frames.size();
+  if (baked.times.size() != frames || baked.positions.size() != frames || baked.weights.size() != frames)
+    throw std::invalid_argument("writeGltf: the baked frames, times, positions and weights differ in count");
+  if (!(baked.fps > 0) || !std::isfinite(baked.fps)) throw std::invalid_argument("writeGltf: fps must be positive");
+  if (!(baked.shapeSize > 0) || !std::isfinite(baked.shapeSize)) throw std::invalid_argument("writeGltf: shapeSize must be positive");
+  for (size_t f = 0; f < frames; ++f) {
+    const std::string frame = "writeGltf: frame " + std::to_string(f) + ": ";
+    if (baked.positions[f].rows() != mesh.vertexCount || !baked.positions[f].allFinite())
+      throw std::invalid_argument(frame + "positions must be finite, one row per vertex");
+    const Eigen::VectorXd& w = baked.weights[f];
+    if (w.size() != static_cast<Eigen::Index>(mesh.artwork.size()) || !w.allFinite() || w.minCoeff() < 0 || !(w.sum() > 0))
+      throw std::invalid_argument(frame + "weights must be one per key, finite, >= 0 and not all 0");
+    if (!std::isfinite(baked.times[f]) || (f > 0 && baked.times[f] < baked.times[f - 1]))
+      throw std::invalid_argument(frame + "times must be finite and not decreasing");
+  }
+}
+
 }  // namespace
 
 void checkGltfPath(const std::string& path, const std::string& field) { containerOf(path, field); }
@@ -42,6 +63,7 @@ GltfExportReport writeGltf(const BakedAnimation& baked, const render::RenderMesh
   if (!(options.maxError >= 0) || !std::isfinite(options.maxError))
     throw std::invalid_argument("writeGltf: maxError must be >= 0");
   if (baked.frames.empty()) throw std::invalid_argument("writeGltf: no frames baked");
+  checkBaked(baked, mesh);
   if (static_cast<int>(scene.keyNames.size()) != static_cast<int>(mesh.artwork.size()))
     throw std::invalid_argument("writeGltf: one key name per drawing");
   const Container container = containerOf(path, "-o");
