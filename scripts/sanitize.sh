@@ -44,5 +44,5 @@ if [ "$kind" = address ]; then
   ctest --test-dir "$build" --output-on-failure -j "$(nproc)" --timeout 1500 -LE soak
 else
   ctest --test-dir "$build" --output-on-failure -j "$(nproc)" --timeout 1500 \
-    -R "solve worker|live solver|frame stream|thread|[Cc]holesky|Anderson|anderson|elimination"
+    -R "solve worker|live solver|frame stream|thread|[Cc]holesky|Anderson|anderson|elimination" -E "^cli:"
 fi

@@ -22,8 +22,10 @@ TEST_CASE("deformation energy: any split into blocks, on a team of any size, giv
   const double energy = evaluate(RowSplit({0, n}), RowSplit({0, t}), reference);
   REQUIRE(energy > 0.1);
   const double scale = reference.cwiseAbs().maxCoeff();
-  for (const auto& [v, k] : {std::pair{std::vector<int>{0, 50, n}, std::vector<int>{0, 130, t}},
+  for (const auto& split : {std::pair{std::vector<int>{0, 50, n}, std::vector<int>{0, 130, t}},
                              std::pair{std::vector<int>{0, 0, 100, n}, std::vector<int>{0, 40, 41, t}}}) {
+    const std::vector<int>& v = split.first;
+    const std::vector<int>& k = split.second;  // not a structured binding: clang cannot use one inside omp
     Eigen::MatrixX2d gradient;
     CHECK(evaluate(RowSplit(v), RowSplit(k), gradient) == Approx(energy).epsilon(1e-12));
     CHECK((gradient - reference).cwiseAbs().maxCoeff() < 1e-12 * scale);
