@@ -23,8 +23,12 @@ options=(-DCMAKE_BUILD_TYPE=Release)
 if [ "$kind" = address ]; then
   options+=(-DINBETWEEN_SANITIZE=address,undefined)
   # Mesa's lavapipe, the Vulkan loader and X keep allocations for the life of the process; the
-  # leak check covers our code and suppresses theirs (scripts/lsan.supp).
-  export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1"
+  # leak check covers our code and suppresses theirs (scripts/lsan.supp). The loader unloads
+  # lavapipe at exit, after which its leaks have no module to match: preloaded, it stays loaded
+  # (and ASan then need not come first among the libraries).
+  lavapipe=$(ls /usr/lib/*/libvulkan_lvp.so 2>/dev/null | head -1)
+  [ -z "$lavapipe" ] || export LD_PRELOAD="$lavapipe"
+  export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1:verify_asan_link_order=0"
   export LSAN_OPTIONS="suppressions=$here/scripts/lsan.supp:print_suppressions=0"
   export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 else
