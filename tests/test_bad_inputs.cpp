@@ -54,45 +54,47 @@ std::string pngDeclaring(uint32_t width, uint32_t height) {
          chunk("IEND", "");
 }
 
-// The good scene's JSON with its key 0 drawing replaced by `drawing` (relative to the bad folder).
+// The good scene, its drawings named by absolute paths so that the copy works from any folder.
+nlohmann::json goodScene() {
+  nlohmann::json scene = nlohmann::json::parse(slurp(kGoodScene));
+  const std::string dir = fs::path(kGoodScene).parent_path().string();
+  for (auto& key : scene["keys"]) key["drawing"] = dir + "/" + key["drawing"].get<std::string>();
+  return scene;
+}
+
+// The good scene with key 0's drawing replaced by `drawing` (relative to the bad folder).
 std::string sceneWithDrawing(const std::string& drawing) {
-  std::string text = slurp(kGoodScene);
-  text = std::regex_replace(text, std::regex("\"square.png\""), "\"" + drawing + "\"", std::regex_constants::format_first_only);
-  text = std::regex_replace(text, std::regex("\"arch.png\""), "\"" + (fs::path(kGoodScene).parent_path() / "arch.png").string() + "\"");
-  return text;
+  nlohmann::json scene = goodScene();
+  scene["keys"][0]["drawing"] = drawing;
+  return scene.dump(2);
 }
 
 // The good scene with a JSON field (a path of keys, e.g. {"solver", "tau"}) set to raw JSON text,
 // which may be what JSON cannot hold (NaN, 1e999): written in through a placeholder.
 std::string sceneWith(const std::vector<std::string>& path, const std::string& raw) {
-  nlohmann::json scene = nlohmann::json::parse(slurp(kGoodScene));
-  const std::string dir = fs::path(kGoodScene).parent_path().string();
-  for (auto& key : scene["keys"]) key["drawing"] = dir + "/" + key["drawing"].get<std::string>();
+  nlohmann::json scene = goodScene();
   nlohmann::json* field = &scene;
   for (const std::string& name : path) field = &(*field)[name];
   *field = "@RAW@";
   return std::regex_replace(scene.dump(2), std::regex("\"@RAW@\""), raw);
 }
 
-// square-arch-notch with a second cut in the square, a slit across its notch.
+// The good scene with a second cut in the square, a slit across its notch.
 std::string crossingCuts() {
-  const std::string dir = fs::path(kGoodScene).parent_path().string();
-  return R"({"version": 1, "reference": "square", "edge_length": 6, "keys": [
-    {"name": "square", "drawing": ")" + dir + R"(/square.png", "features": {"top": [64, 28]},
-     "cuts": [{"name": "split", "kind": "notch", "points": [[64, 100], [64, 64]]},
-              {"name": "x", "kind": "slit", "points": [[44, 80], [84, 80]]}]},
-    {"name": "arch", "drawing": ")" + dir + R"(/arch.png",
-     "features": {"top": [64, 20], "split.left": [46, 108], "split.right": [82, 108], "split.tip": [64, 56],
-                  "x.start": [30, 70], "x.end": [98, 70]}}]})";
+  nlohmann::json scene = goodScene();
+  scene["keys"][0]["cuts"].push_back({{"name", "x"}, {"kind", "slit"}, {"points", {{44, 80}, {84, 80}}}});
+  scene["keys"][1]["features"]["x.start"] = {30, 70};
+  scene["keys"][1]["features"]["x.end"] = {98, 70};
+  return scene.dump(2);
 }
 
-// square-arch-notch with the notch's two sides swapped in the arch: its features then run around
+// The good scene with the notch's two sides swapped in the arch: its features then run around
 // the outline in another order than in the square.
 std::string featuresSwapped() {
-  nlohmann::json scene = nlohmann::json::parse(sceneWith({"version"}, "1"));
+  nlohmann::json scene = goodScene();
   nlohmann::json& features = scene["keys"][1]["features"];
   std::swap(features["split.left"], features["split.right"]);
-  return scene.dump();
+  return scene.dump(2);
 }
 
 struct BadInput {

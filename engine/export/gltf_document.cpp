@@ -2,6 +2,8 @@
 
 #include "export/artwork_bleed.h"
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <cstring>
 #include <limits>
@@ -12,31 +14,11 @@ namespace ib::gltf {
 namespace {
 
 // Text for the JSON: glTF strings are UTF-8, and a name may not be (a folder name on Linux is any
-// bytes; found by the fuzz target). Every byte that does not start a well-formed UTF-8 sequence
-// becomes U+FFFD, as a browser shows it.
+// bytes; found by the fuzz target), which tinygltf's JSON writer throws on. Every invalid byte
+// becomes U+FFFD, through nlohmann's own UTF-8 check.
 std::string validUtf8(const std::string& text) {
-  std::string out;
-  const auto* b = reinterpret_cast<const unsigned char*>(text.data());
-  const size_t n = text.size();
-  for (size_t i = 0; i < n;) {
-    int length = b[i] < 0x80 ? 1 : (b[i] >> 5) == 0x6 ? 2 : (b[i] >> 4) == 0xe ? 3 : (b[i] >> 3) == 0x1e ? 4 : 0;
-    bool ok = length > 0 && i + length <= n;
-    for (int k = 1; ok && k < length; ++k) ok = (b[i + k] & 0xc0) == 0x80;
-    if (ok && length > 1) {  // no overlong forms, surrogates or code points past U+10FFFF
-      const unsigned c = length == 2 ? (b[i] & 0x1fu) << 6 | (b[i + 1] & 0x3fu)
-                         : length == 3 ? (b[i] & 0x0fu) << 12 | (b[i + 1] & 0x3fu) << 6 | (b[i + 2] & 0x3fu)
-                                       : (b[i] & 0x07u) << 18 | (b[i + 1] & 0x3fu) << 12 | (b[i + 2] & 0x3fu) << 6 | (b[i + 3] & 0x3fu);
-      ok = c >= (length == 2 ? 0x80u : length == 3 ? 0x800u : 0x10000u) && c <= 0x10ffff && !(c >= 0xd800 && c <= 0xdfff);
-    }
-    if (ok) {
-      out.append(text, i, static_cast<size_t>(length));
-      i += static_cast<size_t>(length);
-    } else {
-      out += "\xEF\xBF\xBD";
-      ++i;
-    }
-  }
-  return out;
+  const std::string quoted = nlohmann::json(text).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+  return nlohmann::json::parse(quoted).get<std::string>();
 }
 
 DocumentInput withValidNames(const DocumentInput& input) {

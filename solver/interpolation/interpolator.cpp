@@ -305,7 +305,7 @@ Interpolator::Impl::Step Interpolator::Impl::step(const Frame& frame, const Stat
     evaluateState(frame, candidate);
     ++result.evaluations;
     const bool contact = !s.contacts.empty() || !candidate.contacts.empty();
-    if (contact && std::isfinite(candidate.energy) && candidate.x.allFinite()) return Step::kAccepted;
+    if (contact && std::isfinite(candidate.energy)) return Step::kAccepted;  // E sums every vertex: finite E, finite x
   }
   return Step::kStalled;
 }
