@@ -75,7 +75,7 @@ int runMesh(const std::vector<std::string>& rawArgs) {
   const SceneMultimesh built =
       sceneMultimesh(scene, meshOptions, [&](const std::string& stage, double fraction) { progress.update(stage, 0.9 * fraction); });
   nlohmann::json summary{{"scene", scenePath}, {"edge_length", built.edgeLength}};
-  summary["initial"] = qualityJson(*built.initial, names);
+  summary["initial"] = qualityJson(*built.initial, names, &built.shapes);
   const nlohmann::json* after = nullptr;
   const nlohmann::json* table = nullptr;
   progress.update("writing", 0.95);
@@ -85,7 +85,7 @@ int runMesh(const std::vector<std::string>& rawArgs) {
     saveMultimesh(*built.multimesh, output.string());
     summary["initial"]["multimesh"] = initialFile.string();
     summary["comesh"] = comeshJson(*built.comesh);
-    summary["optimized"] = qualityJson(*built.multimesh, names);
+    summary["optimized"] = qualityJson(*built.multimesh, names, &built.shapes);
     summary["optimized"]["multimesh"] = output.string();
     if (pictures) {
       writePictures(scene, built, *built.initial, output, ".initial", summary["initial"]);

@@ -1,5 +1,6 @@
 #include "commands/mesh_report.h"
 
+#include "meshing/outline_fit.h"
 #include "meshing/untangle.h"
 #include "multimesh/mesh_quality.h"
 
@@ -9,8 +10,10 @@
 
 namespace ib {
 
-nlohmann::json qualityJson(const Multimesh& mesh, const std::vector<std::string>& keyNames) {
+nlohmann::json qualityJson(const Multimesh& mesh, const std::vector<std::string>& keyNames,
+                           const std::vector<KeyShape>* shapes) {
   const MultimeshQuality quality = measureQuality(mesh);
+  const std::vector<OutlineFit> fits = shapes && !shapes->empty() ? outlineFits(mesh, *shapes) : std::vector<OutlineFit>{};
   nlohmann::json out{{"vertices", mesh.vertexCount()}, {"triangles", mesh.triangleCount()}};
   out["keys"] = nlohmann::json::array();
   const std::vector<Triangle> triangles = mesh.triangles();
@@ -22,6 +25,10 @@ nlohmann::json qualityJson(const Multimesh& mesh, const std::vector<std::string>
                            {"smallest_angle", quality.keys[k].smallestAngle},
                            {"mean_smallest_angle", quality.keys[k].meanSmallestAngle},
                            {"share_under_20_degrees", quality.keys[k].shareUnder20}});
+    if (!fits.empty()) {
+      out["keys"].back()["outline_deviation"] = fits[k].largest;
+      out["keys"].back()["outline_deviation_at"] = {fits[k].where.x(), fits[k].where.y()};
+    }
   }
   out["maps"] = nlohmann::json::array();
   for (const MapQuality& map : quality.maps)
@@ -73,10 +80,13 @@ void printMeshReport(const nlohmann::json& before, const nlohmann::json* after, 
   for (size_t k = 0; k < before["keys"].size(); ++k) {
     const nlohmann::json& key = before["keys"][k];
     const nlohmann::json* next = after ? &(*after)["keys"][k] : nullptr;
-    std::printf("  key %-12s smallest angle %s deg, mean smallest %s deg, share under 20 deg %s\n",
+    std::printf("  key %-12s smallest angle %s deg, mean smallest %s deg, share under 20 deg %s",
                 ("\"" + key["name"].get<std::string>() + "\"").c_str(), change(key, next, "smallest_angle", "%.1f").c_str(),
                 change(key, next, "mean_smallest_angle", "%.1f").c_str(),
                 change(key, next, "share_under_20_degrees", "%.3f").c_str());
+    if (key.contains("outline_deviation") && (!next || next->contains("outline_deviation")))
+      std::printf(", outline to mesh boundary %s px", change(key, next, "outline_deviation", "%.2f").c_str());
+    std::printf("\n");
   }
   for (size_t i = 0; i < before["maps"].size(); ++i) {
     const nlohmann::json& map = before["maps"][i];

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "comesh/comesh.h"
+#include "meshing/key_shape.h"
 #include "multimesh/multimesh.h"
 
 #include <nlohmann/json.hpp>
@@ -12,8 +13,11 @@
 namespace ib {
 
 // {"vertices", "triangles", "keys": [{name, cohesive_edges, smallest_area, smallest_angle,
-// mean_smallest_angle, share_under_20_degrees}], "maps": [{from, to, mips_mean, mips_max}]}.
-nlohmann::json qualityJson(const Multimesh& mesh, const std::vector<std::string>& keyNames);
+// mean_smallest_angle, share_under_20_degrees, outline_deviation, outline_deviation_at}], "maps": [{from, to, mips_mean,
+// mips_max}]}. outline_deviation (px, meshing/outline_fit.h) and where ([x, y] px) only when `shapes` (one per key) is
+// given and not empty.
+nlohmann::json qualityJson(const Multimesh& mesh, const std::vector<std::string>& keyNames,
+                           const std::vector<KeyShape>* shapes = nullptr);
 
 // The Table 2 columns: keys, vertices/triangles/cohesive edges in and out, inner and outer
 // iterations, seconds in flips, collapses, splits and in total; plus operation counts and energies.
