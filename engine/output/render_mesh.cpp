@@ -53,7 +53,8 @@ double closureAt(double gap, const CutWeldOptions& options) {
 
 }  // namespace
 
-RenderMesh renderMeshOf(const Multimesh& mesh, std::vector<RgbaImage> artwork, std::vector<int> features) {
+RenderMesh renderMeshOf(const Multimesh& mesh, std::vector<RgbaImage> artwork, std::vector<int> features,
+                        const SilhouetteOptions& silhouette) {
   if (static_cast<int>(artwork.size()) != mesh.keyCount())
     throw std::invalid_argument("render: " + std::to_string(artwork.size()) + " drawings for " + std::to_string(mesh.keyCount()) +
                      " keys");
@@ -82,6 +83,8 @@ RenderMesh renderMeshOf(const Multimesh& mesh, std::vector<RgbaImage> artwork, s
   for (int f : features)
     if (f < 0 || f >= out.vertexCount) throw std::invalid_argument("render: feature vertex " + std::to_string(f) + " is not in the mesh");
   out.features = std::move(features);
+  for (int k = 0; k < mesh.keyCount(); ++k)
+    artwork[k] = silhouetteArtwork(artwork[k], out.triangles, mesh.boundaryEdges(), mesh.keyPositions(k), silhouette);
   out.artwork = std::move(artwork);
   return out;
 }

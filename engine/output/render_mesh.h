@@ -5,6 +5,7 @@
 
 #include "core/png_image.h"
 #include "multimesh/multimesh.h"
+#include "output/silhouette_artwork.h"
 
 #include <Eigen/Core>
 #include <array>
@@ -29,17 +30,21 @@ struct RenderMesh {
   int vertexCount = 0;
   std::vector<Triangle> triangles;               // t x 3 vertex indices (drawn without culling)
   std::vector<Eigen::MatrixX2f> keyUV;           // [key]: n x 2, key positions / drawing size, in [0, 1]
-  std::vector<RgbaImage> artwork;                // [key]: the drawing, straight alpha
+  std::vector<RgbaImage> artwork;                // [key]: the drawing as textured, straight alpha,
+                                                 // its band along the mesh boundary as opaque as
+                                                 // its interior (silhouette_artwork.h)
   std::vector<Edge> edges;                       // every mesh edge once (wireframe)
   std::vector<std::vector<Edge>> cohesiveEdges;  // [key]: both edges of each of C_i's pairs
   CutSides cutSides;                             // every key's cohesive pairs, for weldCuts
   std::vector<int> features;                     // vertices marked as features
 };
 
-// The render mesh of a multimesh whose key positions are in the pixels of `artwork[key]`.
+// The render mesh of a multimesh whose key positions are in the pixels of `artwork[key]` (the
+// drawings, straight alpha; their silhouette bands are made opaque with `silhouette`).
 // `features` are vertex indices (may be empty). Throws std::invalid_argument when the artwork count
 // does not match the keys, an image is empty or a feature is not a vertex.
-RenderMesh renderMeshOf(const Multimesh& mesh, std::vector<RgbaImage> artwork, std::vector<int> features = {});
+RenderMesh renderMeshOf(const Multimesh& mesh, std::vector<RgbaImage> artwork, std::vector<int> features = {},
+                        const SilhouetteOptions& silhouette = {});
 
 // Where the solver glues a cut, its two sides lie within a small fraction of a pixel of each other,
 // and the keys that draw the cut open have antialiased, partly transparent texels along it. Drawn

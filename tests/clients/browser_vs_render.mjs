@@ -26,9 +26,12 @@ import { readPng, writePng } from './png.mjs';
 // the keys' outlines disagree (docs/export.md "Where the two differ"). Colour p99 at a key is 0.1:
 // on drawings with inner lines (a 512 px fish with outlined stripes) a frame a fraction of a texel
 // off the drawing's grid shows every colour edge 1 px wide up to 0.063 apart, since a client
-// filters the sRGB texture in linear light and the renderer filters the stored values.
+// filters the sRGB texture in linear light and the renderer filters the stored values. Alpha p99
+// at a key is 0.3: the silhouette is the mesh's multisampled edge (the drawings' rims are made
+// opaque, engine/output/silhouette_artwork.h), and SwiftShader's 4 samples sit elsewhere in the
+// pixel than lavapipe's, so an edge pixel can differ by one sample in four (0.25, seen 0.251).
 export const TOLERANCE = {
-  key: { alphaMean: 0.005, alphaP99: 0.2, colourMean: 0.003, colourP99: 0.1 },
+  key: { alphaMean: 0.005, alphaP99: 0.3, colourMean: 0.003, colourP99: 0.1 },
   between: { alphaMean: 0.02, alphaP99: 0.4, colourMean: 0.015, colourP99: 0.2 },
 };
 
