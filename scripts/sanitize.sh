@@ -2,6 +2,11 @@
 # Builds inbetween with sanitizers and runs the test suite under them. Usage:
 #   scripts/sanitize.sh address [BUILD_DIR]   AddressSanitizer + UndefinedBehaviorSanitizer, the whole
 #                                             suite (default BUILD_DIR: build-asan)
+#   scripts/sanitize.sh address-solver [BUILD_DIR]
+#                                             AddressSanitizer + UBSan with clang, without the engine
+#                                             (the build scripts/fuzz.sh makes, default build-fuzz): the
+#                                             solver's and the CPU output layer's tests, about a third of
+#                                             the whole suite's build time; what CI runs
 #   scripts/sanitize.sh thread [BUILD_DIR]    ThreadSanitizer with clang and LLVM's OpenMP (Archer tells
 #                                             it about OpenMP's barriers), without the engine: the
 #                                             tests of the player's solve worker, the live solver and
@@ -12,15 +17,22 @@ here=$(cd "$(dirname "$0")/.." && pwd)
 kind=${1:-address}
 case "$kind" in
   address) build=${2:-"$here/build-asan"} ;;
+  address-solver) build=${2:-"$here/build-fuzz"} ;;
   thread) build=${2:-"$here/build-tsan"} ;;
-  *) echo "sanitize.sh: '$kind' is not address or thread" >&2; exit 2 ;;
+  *) echo "sanitize.sh: '$kind' is not address, address-solver or thread" >&2; exit 2 ;;
 esac
 
 INBETWEEN_SETUP_ONLY=1 "$here/scripts/setup.sh"
 
 options=(-DCMAKE_BUILD_TYPE=Release)
 [ -z "${INBETWEEN_WERROR:-}" ] || options+=("-DINBETWEEN_WERROR=$INBETWEEN_WERROR")
-if [ "$kind" = address ]; then
+if [ "$kind" = address-solver ]; then
+  # The same configuration as scripts/fuzz.sh, so that one build serves both.
+  options+=(-DCMAKE_CXX_COMPILER=clang++-14 -DINBETWEEN_ENGINE=OFF -DINBETWEEN_FUZZ=ON -DINBETWEEN_SANITIZE=address,undefined)
+  export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1"
+  export LSAN_OPTIONS="suppressions=$here/scripts/lsan.supp:print_suppressions=0"
+  export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+elif [ "$kind" = address ]; then
   options+=(-DINBETWEEN_SANITIZE=address,undefined)
   # Mesa's lavapipe, the Vulkan loader and X keep allocations for the life of the process; the
   # leak check covers our code and suppresses theirs (scripts/lsan.supp). The loader unloads
@@ -40,12 +52,16 @@ fi
 cmake -S "$here" -B "$build" "${options[@]}"
 if [ "$kind" = address ]; then
   cmake --build "$build" -j "$(nproc)"
+elif [ "$kind" = address-solver ]; then
+  cmake --build "$build" -j "$(nproc)" --target inbetween_tests inbetween_output_tests
 else
   cmake --build "$build" -j "$(nproc)" --target inbetween_tests inbetween_output_tests
 fi
 if [ "$kind" = address ]; then
   # All but the soak (10,000 player frames, minutes under the sanitizers; leaks show at exit anyway).
   ctest --test-dir "$build" --output-on-failure -j "$(nproc)" --timeout 1500 -LE soak
+elif [ "$kind" = address-solver ]; then
+  ctest --test-dir "$build" --output-on-failure -j "$(nproc)" --timeout 1500 -L "^(solver|engine)$" -E "^cli:"
 else
   ctest --test-dir "$build" --output-on-failure -j "$(nproc)" --timeout 1500 \
     -R "solve worker|live solver|frame stream|thread|[Cc]holesky|Anderson|anderson|elimination" -E "^cli:"
