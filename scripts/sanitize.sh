@@ -53,7 +53,8 @@ cmake -S "$here" -B "$build" "${options[@]}"
 if [ "$kind" = address ]; then
   cmake --build "$build" -j "$(nproc)"
 elif [ "$kind" = address-solver ]; then
-  cmake --build "$build" -j "$(nproc)" --target inbetween_tests inbetween_output_tests
+  cmake --build "$build" -j "$(nproc)" --target inbetween_tests inbetween_output_tests inbetween_api_tests \
+    replay_scene replay_png_tracing replay_multimesh replay_gltf_writer
 else
   cmake --build "$build" -j "$(nproc)" --target inbetween_tests inbetween_output_tests
 fi
