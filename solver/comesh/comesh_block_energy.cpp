@@ -35,7 +35,11 @@ void BlockEnergy::prepareRange(int begin, int end, const std::vector<Eigen::Matr
   char* inverted = inverted_.data();
   // One pass with gathers and selects, which GCC vectorizes (the outputs alias no input); entries
   // (r, c) of the 2 x 2 edge matrices are coordinate r of edge c.
+#if defined(__clang__)
+#pragma clang loop vectorize(assume_safety)
+#else
 #pragma GCC ivdep
+#endif
   for (int k = begin; k < end; ++k) {
     const double n00 = nx[c1[k]] - nx[c0[k]], n01 = nx[c2[k]] - nx[c0[k]];
     const double n10 = ny[c1[k]] - ny[c0[k]], n11 = ny[c2[k]] - ny[c0[k]];
