@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <limits>
+#include <cstdint>
 
 namespace ib::render {
 namespace {
@@ -109,15 +109,16 @@ RgbaImage silhouetteArtwork(const RgbaImage& drawing, const std::vector<Triangle
 
   // The colour of the nearest solid texel, for band texels too transparent to trust their own.
   std::vector<char> solid(count, 0);
-  std::vector<std::array<int, 4>> colour(count, {0, 0, 0, 0});  // summed RGB, count
+  // Summed RGB of the neighbours it came from and their count (at most 8 x 255: 16 bits do).
+  std::vector<std::array<uint16_t, 4>> colour(count, {0, 0, 0, 0});
   for (size_t i = 0; i < count; ++i)
     if (drawing.pixels[4 * i + 3] >= kSolid) {
       solid[i] = 1;
-      colour[i] = {drawing.pixels[4 * i], drawing.pixels[4 * i + 1], drawing.pixels[4 * i + 2], 1};
+      colour[i] = {drawing.pixels[4 * i], drawing.pixels[4 * i + 1], drawing.pixels[4 * i + 2], uint16_t{1}};
     }
-  spreadIntoBand(g, band, solid, colour, passes, [](std::array<int, 4>& into, const std::array<int, 4>& from) {
+  spreadIntoBand(g, band, solid, colour, passes, [](std::array<uint16_t, 4>& into, const std::array<uint16_t, 4>& from) {
     if (from[3] == 0) return;
-    for (int c = 0; c < 3; ++c) into[c] += from[c] / from[3];
+    for (int c = 0; c < 3; ++c) into[c] = static_cast<uint16_t>(into[c] + from[c] / from[3]);
     ++into[3];
   });
 
