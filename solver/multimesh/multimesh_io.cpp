@@ -105,6 +105,10 @@ Multimesh decodeUnprefixed(const std::string& bytes, const std::string& source) 
   const uint32_t n = r.get<uint32_t>("vertex count");
   const uint32_t t = r.get<uint32_t>("triangle count");
   const uint32_t m = r.get<uint32_t>("key count");
+  // Checked before anything is allocated: with m = 0 the key positions would not bound n by the
+  // file's size, and a corrupt n would build a mesh of billions of vertices.
+  if (m == 0) throw InputError(source + ": multimesh has no keys (key count 0; rebuild it with `inbetween mesh`)");
+  r.expect(static_cast<uint64_t>(n) * m, 16, "key position");
   r.expect(t, 3 * 4 + 8, "triangle");
   std::vector<Triangle> tris(t);
   for (auto& tri : tris)
