@@ -1,5 +1,5 @@
 // Outputs are replaced atomically: every command that writes files (mesh, render, export as .glb
-// and as .gltf + .bin, play's screenshot) is killed with SIGKILL at each of its write, fsync and
+// and as .gltf + .bin, play's screenshot, play's saved scene) is killed with SIGKILL at each of its write, fsync and
 // rename system calls in turn (strace's fault injection), over the outputs of an earlier run.
 // After every kill each output is byte for byte either the earlier file or the complete new one,
 // never a mix, a truncation or nothing.
@@ -42,6 +42,7 @@ struct Writer {
   // The player's screenshot shows its UI (frame times among it), so no two runs give the same
   // bytes: a new screenshot is recognized as a whole PNG of the new size instead.
   std::array<int, 2> newPicture{0, 0};
+  bool sceneInOut = false;  // the command edits a scene: a copy of kScene's folder starts in OUT
 };
 
 bool wholePicture(const std::string& bytes, std::array<int, 2> size) {
@@ -75,6 +76,8 @@ TEST_CASE("atomic writes: a command killed at any write, fsync or rename leaves 
       {"export gltf", "export " + kScene + " -o OUT/out.gltf --no-comesh", "export " + kScene + " -o OUT/out.gltf --no-comesh --quantize"},
       {"play screenshot", "play " + kScene + " --frames 1 --screenshot OUT/shot.png --size 64x64 --device cpu",
        "play " + kScene + " --frames 1 --screenshot OUT/shot.png --size 80x64 --device cpu", {80, 64}},
+      {"play save", "play OUT/scene.json --frames 1 --size 64x64 --device cpu --set tau=0.002 --save",
+       "play OUT/scene.json --frames 1 --size 64x64 --device cpu --set tau=0.004 --save", {0, 0}, true},
   };
   const fs::path root = fs::path(INBETWEEN_BUILD) / "kill-mid-write";
   for (const Writer& writer : writers) {
@@ -83,13 +86,18 @@ TEST_CASE("atomic writes: a command killed at any write, fsync or rename leaves 
     const auto run = [&](const std::string& arguments, const std::string& strace) {
       return test::runCommand(strace + std::string(INBETWEEN_CLI) + " " + std::regex_replace(arguments, std::regex("OUT"), out.string()));
     };
+    const auto fresh = [&] {
+      fs::remove_all(out);
+      fs::create_directories(out);
+      if (writer.sceneInOut)
+        for (const auto& entry : fs::directory_iterator(fs::path(kScene).parent_path()))
+          if (entry.path().extension() == ".json" || entry.path().extension() == ".png") fs::copy_file(entry.path(), out / entry.path().filename());
+    };
     // The new version, once, for reference; then the earlier one, which every killed run starts from.
-    fs::remove_all(out);
-    fs::create_directories(out);
+    fresh();
     REQUIRE(run(writer.newer, "").code == 0);
     const std::map<std::string, std::string> newer = filesUnder(out);
-    fs::remove_all(out);
-    fs::create_directories(out);
+    fresh();
     REQUIRE(run(writer.older, "").code == 0);
     const std::map<std::string, std::string> older = filesUnder(out);
     REQUIRE(older.size() == newer.size());

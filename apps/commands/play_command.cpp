@@ -4,6 +4,7 @@
 #include "commands/render_options.h"
 #include "core/error.h"
 #include "gpu/vulkan_check.h"
+#include "playback/scene_parameters.h"
 #include "player/player_window.h"
 #include "progress.h"
 
@@ -18,7 +19,7 @@ namespace ib {
 namespace {
 
 constexpr const char* kUsage =
-    "usage: inbetween play SCENE [--frames N --screenshot PATH] [--set NAME=VALUE]... [--weights K=W,...]\n"
+    "usage: inbetween play SCENE [--frames N [--screenshot PATH] [--save]] [--set NAME=VALUE]... [--weights K=W,...]\n"
     "                            [--size WxH] [--device D] [--validation]\n"
     "\n"
     "Plays the scene in a window (Vulkan; lavapipe without a GPU) with every parameter as a slider:\n"
@@ -29,6 +30,7 @@ constexpr const char* kUsage =
     "  --frames N          scripted: present N frames and exit. Timeline frames 0..N-1 (wrapping), each\n"
     "                      solved before it is drawn, so the picture is the same on every run\n"
     "  --screenshot PATH   scripted: write the last frame's window, UI included, as PNG\n"
+    "  --save              scripted: then write the parameters into the scene, as Save parameters does\n"
     "  --set NAME=VALUE    a parameter's starting value (repeatable): tau, alpha, lambda, kappa_scale,\n"
     "                      non_overlap, dynamics, epsilon, mu, gravity_x, gravity_y, wind_x, wind_y, anchor\n"
     "  --weights K=W,...   weights mode at these weights (K a key's name or index; others 0; normalized)\n"
@@ -132,12 +134,14 @@ int runPlay(const std::vector<std::string>& rawArgs) {
   if (cli::printHelpIfAsked(rawArgs, kUsage)) return 0;
   const SplitArguments split = splitSets(rawArgs);
   const cli::Arguments arguments("play", split.rest, {"frames", "screenshot", "weights", "size", "samples", "sampling", "device", "threads"},
-                                 {"validation", "no-vsync"});
+                                 {"validation", "no-vsync", "save"});
   if (arguments.positional().size() != 1) throw InputError("play: needs exactly one SCENE file (see `inbetween play --help`)");
   const std::string scenePath = arguments.positional()[0];
   const int frames = arguments.integer("frames", 0, 1, 1000000);
   const std::string screenshot = arguments.value("screenshot", "");
   if (!screenshot.empty() && !arguments.has("frames")) throw InputError("play: --screenshot needs --frames N (a scripted run)");
+  const bool save = arguments.flag("save");
+  if (save && !arguments.has("frames")) throw InputError("play: --save needs --frames N (a scripted run; in the window, Save parameters)");
   play::PlayerWindowOptions windowOptions;
   if (arguments.has("size")) {
     const std::array<int, 2> size = parseSize(arguments.value("size", ""), "--size");
@@ -183,6 +187,10 @@ int runPlay(const std::vector<std::string>& rawArgs) {
     runScripted(session, *window, frames, screenshot);
     requireSilentValidation(*window, windowOptions.validation);
     if (!screenshot.empty()) std::printf("%s: %d frames presented; wrote %s\n", scenePath.c_str(), frames, screenshot.c_str());
+    if (save) {  // what the Save parameters button does, with its error as this command's
+      play::saveParameters(scenePath, session.parameters(), session.transport().fps());
+      std::printf("%s: saved the parameters\n", scenePath.c_str());
+    }
     return 0;
   }
   window->run();
