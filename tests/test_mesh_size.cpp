@@ -3,6 +3,8 @@
 #include "core/error.h"
 #include "meshing/mesh_size.h"
 #include "meshing/multimesh_builder.h"
+#include "meshing/outline_fit.h"
+#include "pipeline/scene_multimesh.h"
 #include "pipeline/artwork_sampling.h"
 #include "scene/scene.h"
 #include "sprites.h"
@@ -107,6 +109,24 @@ TEST_CASE("mesh size: a 64 px sprite meshed at the default keeps its beak and to
   CHECK(lostDefault < 0.04);
   CHECK(lostCoarse > 0.05);
   CHECK(lostDefault < 0.7 * lostCoarse);
+}
+
+TEST_CASE("mesh size: the bird sprite at 32-128 px, meshed and optimized at the defaults, follows every key's traced outline within 0.5 px and loses at most 1.5% of its pixels from 64 px") {
+  for (const int size : {32, 64, 96, 128}) {
+    const Scene scene = birdScene(size);
+    SceneMultimeshOptions options;
+    options.useCache = false;
+    const SceneMultimesh built = sceneMultimesh(scene, options);
+    const std::vector<OutlineFit> fits = outlineFits(*built.multimesh, built.shapes);
+    for (int k = 0; k < 2; ++k) {
+      const double lost = lostShare(*built.multimesh, k, test::birdSprite(size, 6.0 * k));
+      INFO(size << " px, key " << k << ": mesh boundary up to " << fits[k].largest << " px from the outline at ("
+                << fits[k].where.transpose() << "), " << 100 * lost << "% of the drawn pixels lost, "
+                << built.multimesh->vertexCount() << " vertices");
+      CHECK(fits[k].largest < 0.5);
+      if (size >= 64) CHECK(lost <= 0.015);  // at 32 px the 0.7 px legs are under the tracing's speck size
+    }
+  }
 }
 
 TEST_CASE("mesh size: an explicit edge_length in the scene wins over the default") {

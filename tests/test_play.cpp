@@ -140,9 +140,9 @@ TEST_CASE("play: --weights at e_i shows key i's drawing, and a blend shows neith
 }
 
 TEST_CASE("play: --set tau changes the picture where a cut lets go", "[.window]") {
-  // Frame 18 of the timeline: the notch has opened with the scene's tau; a large tau keeps it shut.
-  const RgbaImage plain = screenshot("tau-default", "", 19);
-  const RgbaImage held = screenshot("tau-large", "--set tau=0.05", 19);
+  // Frame 20 of the timeline: the notch has opened with the scene's tau; a large tau keeps it shut.
+  const RgbaImage plain = screenshot("tau-default", "", 21);
+  const RgbaImage held = screenshot("tau-large", "--set tau=0.05", 21);
   CHECK(pictureDifference(plain, held) > 200);
 }
 
@@ -244,7 +244,7 @@ TEST_CASE("play: a drawing edited on disk is picked up while playing; a broken s
 TEST_CASE("play: Save parameters writes the tuned values into the scene, which then plays the same frames", "[.window]") {
   const fs::path dir = sceneCopy("save");
   const std::string path = (dir / "scene.json").string();
-  constexpr int kFrame = 18;  // the notch opening: where tau matters
+  constexpr int kFrame = 20;  // the notch opening: where tau matters
   play::PlayerSession tuned(std::make_unique<play::SceneReloader>(path), {});
   const Scene original = tuned.scene().scene;
   tuned.parameters().set("tau", 0.004);
@@ -262,7 +262,7 @@ TEST_CASE("play: Save parameters writes the tuned values into the scene, which t
   // the notch's release depend on which frames it happened to solve first (a frame solved cold
   // there settles up to 18 px away, in the energy's other minimum), so they are compared here
   // through the stream, which is deterministic. The saved scene plays what the tuned session
-  // solves, and the tuning is visible there (11.9 px at frame 18).
+  // solves, and the tuning is visible there (19.5 px at frame 20).
   const Multimesh& mesh = *saved.scene().mesh;
   const auto frameOf = [&](const Scene& scene, const InterpolationParams& params) {
     FrameStream stream(mesh, scene.timeline, params, SolverOptions{}, scene.dynamics);

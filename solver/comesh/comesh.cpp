@@ -59,20 +59,36 @@ class VertexStepper {
     const Eigen::MatrixX2d start = mesh_.keys[key_];
     const Eigen::VectorXd startU = mesh_.u.col(key_);
     if (!(stepSize > 0)) stepSize = 0.1 * meanEdge(start) / largest;
-    for (int attempt = 0; attempt < 20; ++attempt) {
-      // The block energy is infinite when a triangle is not positive in key i (or in a
-      // neighbour, which no step can change): it is the positivity check of the interior's joint move.
-      moveTogether(start, startU, stepSize);
-      double after = energy_.evaluate(mesh_.keys[key_], nullptr);
-      if (!(after < std::numeric_limits<double>::infinity())) {
-        moveOneByOne(start, startU, stepSize);
-        after = energy_.evaluate(mesh_.keys[key_], nullptr);
+    // A step that lowers eq. 8 may still thin a sliver: ODT evens triangle sizes out, so next to
+    // a boundary edge much shorter than the mesh around it (a tip's outline needs them) it pulls
+    // the inside vertex away, and the ear between them thinned to 1-2 degrees. The vertices of
+    // every triangle a step would leave under kSliverDegrees and thinner than before are held
+    // still and the step is searched again without them, up to kSliverRounds times.
+    constexpr int kSliverRounds = 4;
+    for (int round = 0; round <= kSliverRounds; ++round) {
+      double trial = stepSize;
+      bool again = false;
+      for (int attempt = 0; attempt < 20 && !again; ++attempt) {
+        // The block energy is infinite when a triangle is not positive in key i (or in a
+        // neighbour, which no step can change): it is the positivity check of the interior's joint move.
+        moveTogether(start, startU, trial);
+        double after = energy_.evaluate(mesh_.keys[key_], nullptr);
+        if (!(after < std::numeric_limits<double>::infinity())) {
+          moveOneByOne(start, startU, trial);
+          after = energy_.evaluate(mesh_.keys[key_], nullptr);
+        }
+        if (after < before) {
+          again = round < kSliverRounds && holdSlivers(start);  // then search again, those held
+          if (again) continue;
+          stepSize = trial * 1.5;
+          return (before - after) / (objective > 0 && std::isfinite(objective) ? objective : before);
+        }
+        trial *= 0.5;
       }
-      if (after < before) {
-        stepSize *= 1.5;
-        return (before - after) / (objective > 0 && std::isfinite(objective) ? objective : before);
+      if (!again) {
+        stepSize = trial;
+        break;
       }
-      stepSize *= 0.5;
     }
     mesh_.keys[key_] = start;
     mesh_.u.col(key_) = startU;
@@ -80,6 +96,38 @@ class VertexStepper {
   }
 
  private:
+  // The sine of triangle c's smallest angle at positions x (0 when it is not positive): the
+  // smallest angle faces the shortest edge, sin = 2 area / (the other two edges' product).
+  static double smallestSine(const Eigen::MatrixX2d& x, const Triangle& c) {
+    const Eigen::Vector2d a = x.row(c[0]), b = x.row(c[1]), d = x.row(c[2]);
+    const double twice = (b - a).x() * (d - a).y() - (b - a).y() * (d - a).x();
+    if (!(twice > 0)) return 0;
+    const double ab = (b - a).norm(), bd = (d - b).norm(), da = (a - d).norm();
+    const double shortest = std::min({ab, bd, da});
+    return shortest == ab ? twice / (bd * da) : shortest == bd ? twice / (ab * da) : twice / (ab * bd);
+  }
+
+  // Stops (direction 0) the vertices of every triangle that the positions now in the key leave
+  // under kSliverDegrees and thinner than at `start`; whether there were any.
+  bool holdSlivers(const Eigen::MatrixX2d& start) {
+    constexpr double kSliverDegrees = 10;
+    const double floor = std::sin(kSliverDegrees * 3.14159265358979323846 / 180);
+    const Eigen::MatrixX2d& x = mesh_.keys[key_];
+    bool held = false;
+    for (const Triangle& c : mesh_.triangles) {
+      if (c[0] < 0) continue;
+      const double now = smallestSine(x, c);
+      if (!(now < floor && now < smallestSine(start, c))) continue;
+      for (int v : c)
+        if (x.row(v) != start.row(v)) {
+          direction_.row(v).setZero();
+          slide_[v] = 0;
+          held = true;
+        }
+    }
+    return held;
+  }
+
   // d point / du at the vertex's place on its arc in this key (px per unit u).
   Eigen::Vector2d tangent(int v) const {
     const double u = mesh_.u(v, key_), h = 1e-4;
@@ -312,7 +360,7 @@ Multimesh comeshOptimize(const Multimesh& input, const ComeshBoundary* boundary,
       const double unit = remesher.unitLength(i);
       VertexStepper stepper(mesh, preconditioner, blockEnergy, i, odtWeights[i],
                             {options.bounds.collapseLength * unit, options.bounds.splitLength * unit,
-                             options.bounds.chordTolerance * unit});
+                             std::min(options.bounds.chordTolerance * unit, options.bounds.outlineTolerance)});
       double innerResidual = 0;
       for (int inner = 0; inner < options.innerIterations; ++inner) {
         ++r.innerIterations;

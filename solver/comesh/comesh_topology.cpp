@@ -66,6 +66,24 @@ AngleRange keyAngles(const ComeshMesh& mesh, const std::vector<Triangle>& corner
   return range;
 }
 
+// Whether triangles `after`, replacing `before`, have in some key a smallest angle under both
+// that key's smallest before and the angle whose cosine is `floorCosine`: an operation judged by
+// the angles over all keys could otherwise thin one key down to another key's worst triangle.
+bool thinsSomeKey(const ComeshMesh& mesh, const std::vector<Triangle>& before, const std::vector<Triangle>& after,
+                  double floorCosine) {
+  for (int k = 0; k < mesh.keyCount(); ++k) {
+    const auto smallest = [&](const std::vector<Triangle>& corners) {
+      AngleRange range;
+      const Eigen::MatrixX2d& x = mesh.keys[k];
+      for (const Triangle& t : corners)
+        range.add(angles(x.row(t[0]).transpose(), x.row(t[1]).transpose(), x.row(t[2]).transpose()));
+      return range.smallest;  // a cosine: larger is thinner
+    };
+    if (smallest(after) > std::max(smallest(before), floorCosine)) return true;
+  }
+  return false;
+}
+
 std::vector<int> neighbours(const ComeshMesh& mesh, int v) {
   std::vector<int> out;
   for (int t : mesh.around[v])
@@ -124,6 +142,7 @@ Remesher::Remesher(ComeshMesh& mesh, const RemeshOptions& options)
     : mesh_(mesh),
       options_(options),
       cosCollapse_(std::cos(options.collapseAngle * 3.14159265358979323846 / 180)),
+      cosFlipFloor_(std::cos(5 * 3.14159265358979323846 / 180)),
       unit_(meanEdgeLengths(mesh)),
       shapes_(mesh, shapeBounds(unit_, options)),
       moves_(mesh.keyCount(), 0) {}
@@ -209,6 +228,10 @@ int Remesher::flipEdges(RemeshCounts& counts) {
     if (refusal.stands(a, b, c, d, before, moves_) || !flipImproves(a, b, c, d, before, refusal) ||
         connected(mesh_, c, d))
       continue;
+    // The quad a, d, b, c (counterclockwise) gets the diagonal c-d: no key may thin there under
+    // both 5 degrees and what it had (10, as for collapses, kept Comesh from lowering
+    // pentagon-star-thin's largest MIPS distortion at all).
+    if (thinsSomeKey(mesh_, {{a, b, c}, {b, a, d}}, {{a, d, c}, {d, b, c}}, cosFlipFloor_)) continue;
     mesh_.flip(a, b);
     refreshCaches();  // triangles t and twin changed; the twin may come later in this pass
     ++flips;
@@ -355,7 +378,7 @@ bool Remesher::tryCollapse(int from, int to) {
   if (walk >= 0) {  // the merged boundary edge follows the outline as well as the two it replaces
     const int first = mesh_.previous[from], last = mesh_.next[from];
     for (int k = 0; k < mesh_.keyCount(); ++k) {
-      const double allowed = std::max(options_.chordTolerance * unit_[k], chordDeviation(k, first, from, last));
+      const double allowed = std::max(std::min(options_.chordTolerance * unit_[k], options_.outlineTolerance), chordDeviation(k, first, from, last));
       if (chordDeviation(k, first, last, last) > allowed) return false;
     }
   }
@@ -378,6 +401,7 @@ bool Remesher::tryCollapse(int from, int to) {
   const std::vector<Eigen::Vector2d> none;
   const AngleRange old = keyAngles(mesh_, before, -1, none), fresh = keyAngles(mesh_, after, -1, none);
   if (fresh.degenerate() || fresh.smallest > old.smallest) return false;
+  if (thinsSomeKey(mesh_, before, after, cosCollapse_)) return false;
   mesh_.collapse(from, to);
   return true;
 }

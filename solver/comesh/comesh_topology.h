@@ -18,6 +18,9 @@ struct RemeshOptions {
   // A boundary edge may stray at most this far (relative) from the outline it stands for, unless
   // it already did: sliding and collapsing never cut across the outline's corners. Default 0.05.
   double chordTolerance = 0.05;
+  // And never more than this (px), so that Comesh keeps the boundary as close to each key's
+  // outline as the shared boundary put it (meshing/shared_boundary.h). Default 0.3.
+  double outlineTolerance = 0.3;
 };
 
 // Operations applied and seconds spent, summed over calls.
@@ -101,6 +104,7 @@ class Remesher {
   ComeshMesh& mesh_;
   RemeshOptions options_;
   double cosCollapse_;        // cosine of options_.collapseAngle
+  double cosFlipFloor_;       // cosine of 5 degrees: no flip thins a key under it and under what it had
   std::vector<double> unit_;  // [key]: mean edge length at construction
   // Every triangle's largest angle and candidate edges in every key: the flip test needs every
   // key of every triangle, while a vertex step moves only one key.

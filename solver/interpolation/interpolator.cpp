@@ -31,6 +31,8 @@ void require(bool ok, const std::string& field, const std::string& rule) {
 const SolverOptions& validOptions(const InterpolationParams& p, const SolverOptions& o) {
   validateInterpolationParams(p);
   require(o.relativeTolerance > 0 && o.relativeTolerance < 1, "relativeTolerance", "must be in (0, 1)");
+  require(o.keyTolerance > 0 && o.keyTolerance < 1, "keyTolerance", "must be in (0, 1)");
+  require(o.keyReach > 0 && std::isfinite(o.keyReach), "keyReach", "must be > 0");
   require(o.maxIterations >= 1, "maxIterations", "must be >= 1");
   require(o.andersonDepth >= 0 && o.andersonDepth <= AndersonAcceleration::kMaxDepth, "andersonDepth",
           "must be in [0, " + std::to_string(AndersonAcceleration::kMaxDepth) + "]");
@@ -300,7 +302,7 @@ Interpolator::Impl::Step Interpolator::Impl::step(const Frame& frame, const Stat
   // step is taken as it is (measured on assets/circles-in-circles after Comesh: 13 frames stalled
   // short of the stopping rule, 4 of them with up to 25 folded triangles and the circles
   // crossing; taking the plain step, every frame converges unfolded).
-  if (params_.nonOverlap) {
+  if (params_.nonOverlap && contactSteps_) {
     candidate.x = plain;
     evaluateState(frame, candidate);
     ++result.evaluations;
@@ -308,6 +310,14 @@ Interpolator::Impl::Step Interpolator::Impl::step(const Frame& frame, const Stat
     if (contact && std::isfinite(candidate.energy)) return Step::kAccepted;  // E sums every vertex: finite E, finite x
   }
   return Step::kStalled;
+}
+
+double Interpolator::Impl::toleranceAt(const Eigen::VectorXd& w) const {
+  double nearest = INFINITY;  // L1 distance to the nearest e_i: 2 (1 - w_i) for weights summing to 1
+  for (Eigen::Index i = 0; i < w.size(); ++i) nearest = std::min(nearest, (w - Eigen::VectorXd::Unit(w.size(), i)).lpNorm<1>());
+  const double t = std::clamp(nearest / options_.keyReach, 0.0, 1.0);
+  const double key = std::min(options_.keyTolerance, options_.relativeTolerance);
+  return key + t * (options_.relativeTolerance - key);
 }
 
 InterpolationResult Interpolator::Impl::solve(const Eigen::VectorXd& w, const Eigen::MatrixX2d* warmStart,
@@ -340,10 +350,15 @@ InterpolationResult Interpolator::Impl::solve(const Eigen::VectorXd& w, const Ei
   // also where a weight reaches or leaves zero), so the secant history seeds this frame. A
   // refactorized H changes the map more, but measurably less than dropping the history costs;
   // the safeguard rejects any step the stale history gets wrong.
-  anderson_.restart();
+  // At a non-overlap contact the map is discontinuous (W_O's targets jump as offenders come and
+  // go) and the last frame's secants can lead into a cycle: circles-in-circles' frame 51 climbed
+  // from E = 2.3e-3 to 7e-2 and back every 160 iterations, to the cap, where a fresh history
+  // converges in 23. So a frame that starts in contact starts its history afresh.
+  if (!s.contacts.empty()) anderson_.reset();
+  else anderson_.restart();
   // Converged when the gradient fell by the relative tolerance, or reached the absolute floor
   // where it is rounding noise (a start that is already a minimizer).
-  const double target = std::max(options_.relativeTolerance * startNorm, gradientFloor_);
+  const double target = std::max(toleranceAt(w) * startNorm, gradientFloor_);
   double norm = startNorm;
   const auto relative = [&](double value) { return startNorm > 0 ? value / startNorm : 0.0; };
   result.residualHistory.push_back(relative(norm));
@@ -351,6 +366,16 @@ InterpolationResult Interpolator::Impl::solve(const Eigen::VectorXd& w, const Ei
   State candidate;
   Eigen::MatrixX2d plain;
   int staleIterations = 0;  // accepted iterations in a row whose set of held pairs H does not model
+  // With non-overlap, the plain steps taken at a contact (step()) may climb, and can cycle:
+  // circles-in-circles' frame 24 went round a loop of 120 iterations, E within 6% above its
+  // lowest, to the cap. So the lowest-energy iterate is kept, and once it has not improved (by a
+  // part in 1e6) for kContactPatience iterations the solve goes back to it, with H at this frame's
+  // weights, and from there takes descent steps only: it converges, or stops there.
+  constexpr int kContactPatience = 40;
+  State lowest;
+  int sinceLowest = 0;
+  contactSteps_ = true;
+  if (params_.nonOverlap) lowest = s;
   while (norm > target && result.iterations < options_.maxIterations) {
     if (cancelled()) {  // s is the last accepted iterate (outside contact, the lowest energy so far)
       result.cancelled = true;
@@ -360,6 +385,18 @@ InterpolationResult Interpolator::Impl::solve(const Eigen::VectorXd& w, const Ei
     if (outcome == Step::kRefactorized) continue;
     if (outcome == Step::kStalled) break;  // no decrease along the step: reported as not converged
     std::swap(s, candidate);
+    if (params_.nonOverlap && contactSteps_) {
+      if (s.energy < lowest.energy * (1 - 1e-6)) {
+        lowest = s;
+        sinceLowest = 0;
+      } else if (++sinceLowest >= kContactPatience) {
+        if (s.energy > lowest.energy) s = lowest;
+        contactSteps_ = false;
+        refactorize(frame.w, frame.springs, s.held, result);
+        anderson_.reset();
+        staleIterations = 0;
+      }
+    }
     // A pair that let go keeps its stiff spring in a stale H, so steps along it stay tiny while
     // still lowering the energy, and nothing fails (measured: the frame where a cut lets go took
     // 46-500 iterations). So H's factor follows the pairs at once where it can (followHeld);

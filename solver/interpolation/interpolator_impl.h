@@ -63,6 +63,8 @@ class Interpolator::Impl {
   // set of held pairs changed) a refactorization to retry with, else a backtracked plain
   // step. On kAccepted the new iterate is in candidate; plain is scratch.
   enum class Step { kAccepted, kRefactorized, kStalled };
+  double toleranceAt(const Eigen::VectorXd& w) const;  // SolverOptions::keyTolerance near a key
+  bool contactSteps_ = true;  // step() may take an uphill plain step at a contact (solve() says when)
   Step step(const Frame& frame, const State& s, State& candidate, Eigen::MatrixX2d& plain, InterpolationResult& result);
   // H's factor for a frame's weights w (m x 1), vertex springs (n x 1 or empty) and held
   // cohesive pairs (interpolator_factor.cpp); all counted and timed in result.

@@ -11,6 +11,10 @@ namespace ib {
 // KeyBoundary::knotFractions (knot u values come with the segment counts).
 void placeCornerKnots(SharedBoundary& boundary, int reference, const SharedBoundaryOptions& options);
 
+// More knots (corners of no key, free to slide) where an arc curves: between them, even chords
+// follow every key's outline within options.chordTolerance (px) at options.edgeLength.
+void placeCurveKnots(SharedBoundary& boundary, const SharedBoundaryOptions& options);
+
 // BoundaryArc::segments and knots: enough segments between knots that no key's boundary edge is
 // longer than `edgeLength` (px); cut sides equal; at least three per loop.
 void countSegments(SharedBoundary& boundary, int reference, double edgeLength);

@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 #include "core/plane_geometry.h"
+#include "meshing/outline_corners.h"
 
 #include <algorithm>
 #include <cmath>
@@ -56,6 +57,35 @@ Snap snapOntoLoops(std::vector<ShapeLoop>& loops, const Eigen::Vector2d& p) {
   }
   return best;
 }
+
+// The corners of the traced outlines (before cuts), for snapping features and cut ends onto them.
+class CornerTargets {
+ public:
+  CornerTargets(const std::vector<ShapeLoop>& loops, double radius, double window) : radius_(radius) {
+    if (radius <= 0) return;
+    OutlineCornerOptions detection;
+    detection.window = window;
+    for (const ShapeLoop& l : loops) {
+      const ArcLengthLoop loop(l.points);
+      for (const OutlineCorner& c : outlineCorners(loop, detection)) corners_.push_back(loop.at(c.s));
+    }
+  }
+  // The nearest corner within the radius of p, else p.
+  Eigen::Vector2d target(const Eigen::Vector2d& p) const {
+    Eigen::Vector2d best = p;
+    double nearest = radius_;
+    for (const Eigen::Vector2d& c : corners_)
+      if ((c - p).norm() <= nearest) {
+        nearest = (c - p).norm();
+        best = c;
+      }
+    return best;
+  }
+
+ private:
+  double radius_;
+  std::vector<Eigen::Vector2d> corners_;
+};
 
 // The loop rotated to start at point `start`.
 ShapeLoop rotated(const ShapeLoop& loop, int start) {
@@ -296,8 +326,10 @@ KeyShape buildKeyShape(const Scene& scene, int key, const std::vector<Outline>& 
     shape.loops.push_back({o.outer, std::vector<std::string>(o.outer.size())});
     for (const Polyline& h : o.holes) shape.loops.push_back({h, std::vector<std::string>(h.size())});
   }
+  const CornerTargets corners(shape.loops, options.cornerSnap, options.cornerWindow);
   for (const auto& [name, p] : spec.features) {
-    const Snap s = snapOntoLoops(shape.loops, p);
+    Snap s = snapOntoLoops(shape.loops, corners.target(p));
+    if (!shape.loops[s.loop].features[s.point].empty()) s = snapOntoLoops(shape.loops, p);  // the corner is taken
     if (s.distance > options.snapDistance) {
       std::ostringstream msg;
       msg.precision(3);

@@ -27,9 +27,17 @@ struct KeyShapeOptions {
   // px: the farthest a placed feature or a cut's boundary end may lie from the outline; both are
   // snapped to the nearest outline point. Default 8.
   double snapDistance = 8;
+  // px: a placed feature or cut end this close to a corner of the traced outline (a sharp turn,
+  // meshing/outline_corners.h) lands on the corner instead: a feature placed at a star's tip means
+  // the tip, wherever the drawing's stroke puts it. 0: plain nearest point. Default 4.
+  double cornerSnap = 4;
+  // px: the window of that corner detection (OutlineCornerOptions::window): a stroke's rounded
+  // tip is a corner at 8 px, a curve at 4. Default 8.
+  double cornerWindow = 8;
 };
 
-// Snaps key `key`'s placed features onto `outlines` (its traced drawing), then applies its cuts in
+// Snaps key `key`'s placed features onto `outlines` (its traced drawing; onto a corner within
+// options.cornerSnap, else the nearest point), then applies its cuts in
 // file order: a notch walks into the shape and back (NAME.right, the tip, NAME.left), a split
 // joins or separates loops, a slit adds a loop of both its sides. Cut sides are exact copies of
 // the cut's points. Throws InputError naming file, key, feature or cut: a feature or cut end too

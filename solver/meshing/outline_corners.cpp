@@ -15,6 +15,27 @@ double turning(const ArcLengthLoop& loop, double s, double r) {
   return std::atan2(in.x() * out.y() - in.y() * out.x(), in.dot(out));
 }
 
+// The outline point within r of arc length s farthest from the chord at(s - r) -> at(s + r): the
+// tip of the corner, where a vertex clips least of it (the turning's peak can sit a pixel off a
+// lopsided tip). s itself when no outline point lies in that stretch.
+double tipNear(const ArcLengthLoop& loop, double s, double r) {
+  const double length = loop.length();
+  const Eigen::Vector2d a = loop.at(s - r), b = loop.at(s + r);
+  double best = s, farthest = (loop.at(s) - (a + closestParameter(a, b, loop.at(s)) * (b - a))).norm();
+  const Polyline& points = loop.points();
+  for (size_t i = 0; i < points.size(); ++i) {
+    double along = loop.parameterOfPoint(static_cast<int>(i)) - s;
+    along -= length * std::round(along / length);
+    if (std::abs(along) > r) continue;
+    const double d = (points[i] - (a + closestParameter(a, b, points[i]) * (b - a))).norm();
+    if (d > farthest) {
+      farthest = d;
+      best = s + along;
+    }
+  }
+  return std::fmod(best + length, length);
+}
+
 }  // namespace
 
 std::vector<OutlineCorner> outlineCorners(const ArcLengthLoop& loop, const OutlineCornerOptions& options) {
@@ -44,7 +65,7 @@ std::vector<OutlineCorner> outlineCorners(const ArcLengthLoop& loop, const Outli
       if (std::abs(close[j]) > std::abs(close[sharpest])) sharpest = j;
     }
     if (std::abs(close[sharpest]) < options.concentration * t || close[sharpest] * wide[i] <= 0) continue;
-    corners.push_back({sharpest * step, wide[i]});
+    corners.push_back({tipNear(loop, sharpest * step, w / 3), wide[i]});
   }
   std::sort(corners.begin(), corners.end(), [](const OutlineCorner& a, const OutlineCorner& b) { return a.s < b.s; });
   return corners;

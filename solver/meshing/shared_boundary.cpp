@@ -143,6 +143,7 @@ class Matcher {
     for (size_t k = 0; k < shapes_.size(); ++k) matchKey(static_cast<int>(k));
     pairCutSides();
     placeCornerKnots(out_, ref_, options_);
+    placeCurveKnots(out_, options_);
     countSegments(out_, ref_, options_.edgeLength);
     return std::move(out_);
   }

@@ -43,8 +43,13 @@ struct SharedBoundaryOptions {
   double edgeLength = 8;  // px: longest boundary edge in any key (arcs are split to fit). Default 8.
   int alignmentSamples = 64;  // samples per loop for the automatic start of featureless loops. Default 64.
   // Outline corners: detected over a window of one edge length, paired with the default
-  // CornerMatchOptions, unpaired ones merged within one edge length. Default paired.
-  CornerHandling corners = CornerHandling::kPaired;
+  // CornerMatchOptions, unpaired ones merged within one edge length. Default vertices: every
+  // corner of every key is a boundary vertex (held on it in its own key).
+  CornerHandling corners = CornerHandling::kVertices;
+  // px: farthest any key's outline may stray from its boundary edges (the chords between
+  // consecutive boundary vertices): arcs get more segments where they curve. Default 0.3, so
+  // that each key's silhouette follows its drawing within half a pixel.
+  double chordTolerance = 0.3;
 };
 
 struct SharedBoundary {

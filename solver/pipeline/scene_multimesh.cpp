@@ -134,17 +134,6 @@ std::vector<std::string> comeshRegressions(const Scene& scene, const Multimesh& 
   return {note};
 }
 
-// A build that had to refine its mesh to map every key: at which edge length it was built and why.
-std::vector<std::string> refinementNotes(const Scene& scene, const BuiltScene& built) {
-  if (built.failedAttempts.empty()) return {};
-  char length[32];
-  std::snprintf(length, sizeof length, "%.3g", built.edgeLength);
-  std::string note = fs::path(scene.file).filename().string() + ": built at edge length " + length +
-                     " px, finer than asked: mapping the mesh onto every key without folding triangles failed ";
-  for (size_t i = 0; i < built.failedAttempts.size(); ++i) note += (i ? "; then " : "") + built.failedAttempts[i];
-  return {note + " (each retry divides the edge length by 1.5). Set \"edge_length\" to " + length +
-          " to skip the failed attempts, or check the features and cuts of that key there"};
-}
 
 SceneMultimesh build(const Scene& scene, const SceneMultimeshOptions& options, MonotoneProgress& progress) {
   const double buildShare = options.comesh ? 0.3 : 1.0;  // of the whole call; Comesh takes the rest
@@ -160,7 +149,7 @@ SceneMultimesh build(const Scene& scene, const SceneMultimeshOptions& options, M
   out.edgeLength = built.edgeLength;
   out.initial = std::make_shared<const Multimesh>(std::move(*built.multimesh));
   out.multimesh = out.initial;
-  out.notes = refinementNotes(scene, built);
+  if (!built.failedAttempts.empty()) out.notes.push_back(refinementNote(scene.file, built.edgeLength, built.failedAttempts));
   if (!options.comesh) return out;
 
   const ComeshOptions* given = options.comeshOptions;
@@ -271,6 +260,16 @@ std::vector<int> featureVertices(const Scene& scene, const Multimesh& mesh) {
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());
   return out;
+}
+
+std::string refinementNote(const std::string& sceneFile, double edgeLength, const std::vector<std::string>& failedAttempts) {
+  char length[32];
+  std::snprintf(length, sizeof length, "%.3g", edgeLength);
+  std::string note = fs::path(sceneFile).filename().string() + ": built at edge length " + length +
+                     " px, finer than asked: mapping the mesh onto every key without folding triangles failed ";
+  for (size_t i = 0; i < failedAttempts.size(); ++i) note += (i ? "; then " : "") + failedAttempts[i];
+  return note + " (each retry divides the edge length by 1.5). Set \"edge_length\" to " + length +
+         " to skip the failed attempts, or check the features and cuts of that key there";
 }
 
 }  // namespace ib

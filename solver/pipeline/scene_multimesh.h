@@ -85,6 +85,11 @@ using PipelineProgress = std::function<void(const std::string& stage, double fra
 SceneMultimesh sceneMultimesh(const Scene& scene, const SceneMultimeshOptions& options,
                               const PipelineProgress& progress = nullptr);
 
+// The note of a build that had to refine its mesh to map every key (SceneMultimesh::notes): the
+// scene file's name, the edge length it was built at (px) and each failed attempt, e.g.
+// `at 6 px, key "sprout" folded near (265.0, 445.9)`, with what to set to skip them.
+std::string refinementNote(const std::string& sceneFile, double edgeLength, const std::vector<std::string>& failedAttempts);
+
 // The cache beside a scene file: SCENE's folder / SCENE's name .ibmesh, what `inbetween mesh` writes.
 std::string cachedMeshPath(const std::string& scenePath);
 

@@ -76,8 +76,8 @@ struct Scene {
   // of that size takes about 10 CPU minutes at 250 MB, Comesh minutes more (docs/drawings-to-multimesh.md).
   int maxVertices = 200000;
   // "corners": how the shared boundary treats the outlines' corners (meshing/outline_corners.h).
-  // Default paired.
-  CornerHandling corners = CornerHandling::kPaired;
+  // Default vertices.
+  CornerHandling corners = CornerHandling::kVertices;
   ArtworkSampling sampling = ArtworkSampling::kAuto;  // "sampling": how front ends filter the drawings
   TracingOptions tracing;
   SceneSolverParams solver;
