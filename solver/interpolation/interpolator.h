@@ -53,12 +53,12 @@ struct InterpolationParams {
 
 struct SolverOptions {
   double relativeTolerance = 1e-3;  // stop when |g|_inf / |g(x_start)|_inf < this (paper 7.1)
-  // Near a key the tolerance tightens, linearly in the L1 distance d from w to the nearest e_i,
-  // down to keyTolerance at d = 0, from relativeTolerance at d >= keyReach: a key frame is then
-  // the drawing (at 1e-3, stylized-walk's hand, on a thin arm that costs little to swing, stayed
-  // 1.6 px off its key), and the frames before it lead there without a jump (a relativeTolerance
-  // below keyTolerance holds everywhere). keyReach: a quarter of a segment's L1 length of 2 by
-  // default. Defaults 1e-4, 0.25.
+  // Near a key the solve goes on past relativeTolerance towards a tighter target, linearly in the
+  // L1 distance d from w to the nearest e_i: keyTolerance at d = 0, relativeTolerance at d >=
+  // keyReach, for as long as it gains (docs/solver.md, "Stopping rule"). A key frame is then the
+  // drawing (at 1e-3, stylized-walk's hand, on a thin arm that costs little to swing, stayed 1.6 px
+  // off its key), and the frames before it lead there without a jump. keyReach: a quarter of a
+  // segment's L1 length of 2 by default. Defaults 1e-4, 0.25.
   double keyTolerance = 1e-4;
   double keyReach = 0.25;
   int maxIterations = 500;          // iteration cap; reaching it is reported as not converged
@@ -97,7 +97,8 @@ struct InterpolationResult {
   double energy = 0;                  // W_I + E_P at x (normalized units)
   double startEnergy = 0;             // the same at the (aligned) start
   double interpolationEnergy = 0;     // W_I alone at x (eq. 9), without the placement tie
-  bool converged = false;             // residual below tolerance, or |g| at rounding level; never a small step
+  bool converged = false;             // residual below tolerance, or |g| at rounding level, or at a
+                                      // non-overlap contact's kink (docs/solver.md); never a small step
   bool cancelled = false;             // stopped early by the cancel flag (setCancelFlag): x is the best iterate so far
   int factorizations = 0;             // numeric factorizations of H during this solve
   int factorUpdates = 0;              // rank-one updates of H's factor for changed held pairs
