@@ -299,15 +299,25 @@ Interpolator::Impl::Step Interpolator::Impl::step(const Frame& frame, const Stat
   // At a contact (in s or after the step), W_O's targets p_j jump as offenders come and go, so E
   // is discontinuous along the step and no fraction of it may lower E while the plain step still
   // makes progress. There the paper's iteration, which has no line search, goes on: the plain
-  // step is taken as it is (measured on assets/circles-in-circles after Comesh: 13 frames stalled
-  // short of the stopping rule, 4 of them with up to 25 folded triangles and the circles
-  // crossing; taking the plain step, every frame converges unfolded).
+  // step is taken (measured on assets/circles-in-circles after Comesh: 13 frames stalled short of
+  // the stopping rule, 4 of them with up to 25 folded triangles and the circles crossing), or the
+  // fraction 1/2 .. 1/16 of it that climbs least: a full step into contact, H modelling no
+  // contact, raised E thirtyfold there once and sent the solve wandering.
   if (params_.nonOverlap && contactSteps_) {
     candidate.x = plain;
     evaluateState(frame, candidate);
     ++result.evaluations;
     const bool contact = !s.contacts.empty() || !candidate.contacts.empty();
-    if (contact && std::isfinite(candidate.energy)) return Step::kAccepted;  // E sums every vertex: finite E, finite x
+    if (!contact || !std::isfinite(candidate.energy)) return Step::kStalled;  // E sums every vertex: finite E, finite x
+    State least = candidate;
+    for (double beta = 0.5; beta >= 0.0625; beta *= 0.5) {
+      candidate.x = s.x + beta * (plain - s.x);
+      evaluateState(frame, candidate);
+      ++result.evaluations;
+      if (std::isfinite(candidate.energy) && candidate.energy < least.energy) least = candidate;
+    }
+    candidate = std::move(least);
+    return Step::kAccepted;
   }
   return Step::kStalled;
 }
@@ -392,7 +402,16 @@ InterpolationResult Interpolator::Impl::solve(const Eigen::VectorXd& w, const Ei
     const Step outcome = step(frame, s, candidate, plain, result);
     if (outcome == Step::kRefactorized) continue;
     if (outcome == Step::kStalled) {  // no decrease along the step: not converged, unless at a contact's kink
-      stalledAtContact = params_.nonOverlap && !contactSteps_;
+      if (params_.nonOverlap && contactSteps_ && lowest.energy < s.energy) {  // back to the lowest, descent only
+        s = lowest;
+        norm = gradientNorm(s.gradient);
+        contactSteps_ = false;
+        refactorize(frame.w, frame.springs, s.held, result);
+        anderson_.reset();
+        staleIterations = 0;
+        continue;
+      }
+      stalledAtContact = params_.nonOverlap;
       break;
     }
     std::swap(s, candidate);
@@ -441,10 +460,10 @@ InterpolationResult Interpolator::Impl::solve(const Eigen::VectorXd& w, const Ei
 
   if (params_.nonOverlap) nonOverlap_->project(s.x, frame.participants);
   if (!s.x.allFinite()) throw std::runtime_error("interpolation produced non-finite positions");
-  // At a contact the energy has a kink where the pieces touch (W_O acts on one side only), and its
-  // gradient need not vanish at the minimum: a solve that went back to its lowest iterate and
-  // finds no descent from there has reached it, if the gradient there is within 10 times the rule
-  // (circles-in-circles' frame 24: 1.2 times).
+  // With non-overlap the energy has a kink where the pieces touch (W_O acts on one side only), and
+  // its gradient need not vanish at the minimum: a solve that finds no descent from its lowest
+  // iterate has reached it, if the gradient there is within 10 times the rule (circles-in-circles'
+  // frame 24: 1.2 times).
   result.converged = norm <= converges || (stalledAtContact && norm <= 10 * converges);
   result.relativeResidual = relative(norm);
   result.energy = s.energy;
