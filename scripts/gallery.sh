@@ -2,7 +2,9 @@
 # Regenerates the gallery (docs/gallery.md and docs/gallery/): for every example of the paper in
 # assets/ (those with a README.md), `inbetween render --preview` draws its timeline at 128 x 128 px, 12 frames a second
 # over white; its contact sheet and its animated preview (APNG) are copied into docs/gallery/, and
-# docs/gallery.md shows them with the example's README paragraph.
+# docs/gallery.md shows them with the example's README paragraph. Then the README's figure:
+# square-arch-notch's frames 0, 12, 18, 24, 36 and 42 in a row, plain (docs/images/square-arch-notch.png)
+# and with the mesh, cohesive edges and features drawn (docs/images/square-arch-notch-mesh.png).
 #
 #   scripts/gallery.sh [BUILD_DIR]   (default: build, as scripts/setup.sh makes it)
 set -eu
@@ -42,3 +44,14 @@ for readme in "$root"/assets/*/README.md; do
 done
 mv "$page" "$root/docs/gallery.md"
 echo "gallery.sh: wrote docs/gallery.md and docs/gallery/" >&2
+
+figure() {  # figure NAME [OVERLAY...]: the README's frames of square-arch-notch as docs/images/NAME.png
+  name=$1
+  shift
+  "$inbetween" render "$root/assets/square-arch-notch/scene.json" -o "$scratch/$name" --size 384x384 --background ffffff \
+    --sheet-frames 0,12,18,24,36,42 --sheet-columns 6 --device cpu "$@" > /dev/null
+  cp "$scratch/$name/contact_sheet.png" "$root/docs/images/$name.png"
+}
+figure square-arch-notch
+figure square-arch-notch-mesh --wireframe --cohesive --features
+echo "gallery.sh: wrote docs/images/square-arch-notch.png and square-arch-notch-mesh.png" >&2

@@ -15,6 +15,7 @@
 #include "progress.h"
 #include "scene/scene.h"
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
@@ -48,6 +49,8 @@ constexpr const char* kUsage =
     "  --features           draw the feature vertices, blue\n"
     "  --onion N            onion skins: N neighbouring frames each side, faded (0..2, default 0)\n"
     "  --sheet-every K      every K-th frame on the contact sheet (default: at most 36 tiles)\n"
+    "  --sheet-frames LIST  just these frames on the contact sheet, e.g. 0,12,18,24 (each rendered)\n"
+    "  --sheet-columns N    tiles per row of the contact sheet (default: about square)\n"
     "  --preview            also DIR/preview.png: every frame at the contact sheet's tile size (240 px\n"
     "                       wide at most), an animated PNG (APNG) that loops at the timeline's rate\n"
     "  --mesh FILE          multimesh to use (default: SCENE's .ibmesh from `inbetween mesh` when\n"
@@ -82,6 +85,7 @@ int runRender(const std::vector<std::string>& rawArgs) {
   if (cli::printHelpIfAsked(args, kUsage)) return 0;
   const cli::Arguments arguments("render", args,
                                  {"output", "frames", "size", "fps", "background", "samples", "sampling", "onion", "sheet-every",
+                                  "sheet-frames", "sheet-columns",
                                   "mesh", "device", "threads"},
                                  {"wireframe", "cohesive", "features", "no-comesh", "validation", "preview"});
   if (arguments.positional().size() != 1) throw InputError("render: needs exactly one SCENE file (see `inbetween render --help`)");
@@ -96,6 +100,10 @@ int runRender(const std::vector<std::string>& rawArgs) {
   if (range[1] >= frameCount)
     throw InputError("--frames: the timeline has frames 0.." + std::to_string(frameCount - 1) + ", asked for up to " +
                      std::to_string(range[1]));
+  for (const int f : options.sheetFrames)
+    if (f < range[0] || f > range[1])
+      throw InputError("--sheet-frames: frame " + std::to_string(f) + " is not rendered (frames " + std::to_string(range[0]) +
+                       ".." + std::to_string(range[1]) + "): choose frames within --frames");
   vk::ContextOptions contextOptions;
   contextOptions.validation = options.validation;
   contextOptions.device = options.device;
@@ -131,6 +139,11 @@ int runRender(const std::vector<std::string>& rawArgs) {
   FrameStream stream(mesh, timeline, interpolationParams(scene.solver), solver, scene.dynamics);
   const int rendered = range[1] - range[0] + 1;
   const int every = options.sheetEvery > 0 ? options.sheetEvery : (rendered + 35) / 36;
+  auto onSheet = [&](int f) {
+    if (!options.sheetFrames.empty())
+      return std::binary_search(options.sheetFrames.begin(), options.sheetFrames.end(), f);
+    return (f - range[0]) % every == 0;
+  };
   const int tileW = std::min(240, size[0]);
   const int tileH = std::max(1, static_cast<int>(std::lround(double(tileW) * size[1] / size[0])));
   std::vector<RgbaImage> tiles, preview;
@@ -142,9 +155,10 @@ int runRender(const std::vector<std::string>& rawArgs) {
     inFlight.pop_front();
     const RgbaImage image = renderer.take();
     writePng(framePath(dir, f), image);
-    if ((f - range[0]) % every == 0 || options.preview) {
+    const bool sheet = onSheet(f);
+    if (sheet || options.preview) {
       RgbaImage tile = render::shrink(image, tileW, tileH);
-      if ((f - range[0]) % every == 0) tiles.push_back(tile);
+      if (sheet) tiles.push_back(tile);
       if (options.preview) preview.push_back(std::move(tile));
     }
     ++written;
@@ -164,7 +178,9 @@ int runRender(const std::vector<std::string>& rawArgs) {
   render::playWithNeighbours(stream, range, options.onion, draw);
   while (!inFlight.empty()) collect();
   const std::string sheetPath = (dir / "contact_sheet.png").string();
-  writePng(sheetPath, render::contactSheet(tiles, {}));
+  render::ContactSheetOptions sheet;
+  sheet.columns = options.sheetColumns;
+  writePng(sheetPath, render::contactSheet(tiles, sheet));
   const std::string previewPath = (dir / "preview.png").string();
   if (options.preview)
     writeFileAtomically(previewPath, render::encodeAnimatedPng(preview, static_cast<int>(std::lround(1000 / timeline.fps()))));

@@ -79,6 +79,13 @@ RenderOptions parseRenderOptions(const cli::Arguments& a) {
   o.sampling = parseSampling(a);
   o.onion = a.integer("onion", 0, 0, render::kMaxOnionSkins / 2);
   o.sheetEvery = a.integer("sheet-every", 0, 0, 100000);
+  if (a.has("sheet-frames")) {
+    if (a.has("sheet-every")) throw InputError("render: --sheet-frames and --sheet-every both choose the sheet's frames: give one");
+    o.sheetFrames = cli::integerList(a.value("sheet-frames", ""), "sheet-frames", 0, 100000000);
+    std::sort(o.sheetFrames.begin(), o.sheetFrames.end());
+    o.sheetFrames.erase(std::unique(o.sheetFrames.begin(), o.sheetFrames.end()), o.sheetFrames.end());
+  }
+  o.sheetColumns = a.integer("sheet-columns", 0, 0, 1000);
   o.preview = a.flag("preview");
   o.mesh.meshFile = a.value("mesh", "");
   o.mesh.comesh = !a.flag("no-comesh");

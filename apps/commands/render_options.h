@@ -26,6 +26,8 @@ struct RenderOptions {
   std::optional<render::Sampling> sampling;
   int onion = 0;                       // --onion N: neighbouring frames each side, 0..2
   int sheetEvery = 0;                  // --sheet-every K: every k-th frame on the sheet; 0 = at most 36 tiles
+  std::vector<int> sheetFrames;        // --sheet-frames LIST: just these frames on the sheet, ascending; empty = by sheetEvery
+  int sheetColumns = 0;                // --sheet-columns N: tiles per row; 0 = about square
   bool preview = false;                // --preview: DIR/preview.png, every frame at tile size, animated (APNG)
   SceneMultimeshOptions mesh;          // --mesh FILE, --no-comesh
   vk::DevicePreference device = vk::DevicePreference::kAny;  // --device any|gpu|cpu
