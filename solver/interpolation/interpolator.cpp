@@ -45,23 +45,6 @@ const SolverOptions& validOptions(const InterpolationParams& p, const SolverOpti
   return o;
 }
 
-// E_S = 1/2 sum_v c_v |x_v - y_v|^2, its gradient added to g. Summed serially: bit-identical
-// results for any thread count.
-double springEnergyOf(const Eigen::VectorXd& c, const Eigen::MatrixX2d& target, const Eigen::MatrixX2d& x,
-                      Eigen::MatrixX2d& g) {
-  double energy = 0;
-  for (Eigen::Index v = 0; v < x.rows(); ++v) {
-    const double dx = x(v, 0) - target(v, 0), dy = x(v, 1) - target(v, 1);
-    energy += c(v) * (dx * dx + dy * dy);
-    g(v, 0) += c(v) * dx;
-    g(v, 1) += c(v) * dy;
-  }
-  return 0.5 * energy;
-}
-
-Eigen::Map<const Eigen::VectorXd> flat(const Eigen::MatrixX2d& x) { return {x.data(), x.size()}; }
-Eigen::Map<Eigen::VectorXd> flatMutable(Eigen::MatrixX2d& x) { return {x.data(), x.size()}; }
-
 // Threads for a mesh of n vertices: below a few thousand vertices a thread's share of an
 // iteration is shorter than the cost of waking it, so small meshes run on one.
 int threadsFor(int requested, int vertices) {
@@ -98,23 +81,6 @@ double Interpolator::Impl::gradientNorm(const Eigen::MatrixX2d& g) const {
   }
   return *std::max_element(partial.begin(), partial.end());
 }
-
-struct Interpolator::Impl::Frame {
-  Eigen::VectorXd w;
-  Eigen::VectorXd springs;         // c_v (empty: no springs)
-  Eigen::MatrixX2d springTarget;   // y_v, normalized
-  ActiveKeys keys;
-  Eigen::MatrixX2d blend;         // Xbar(w) = sum_i w_i X_i, normalized
-  std::vector<int> participants;  // W_O boundary vertices
-};
-
-struct Interpolator::Impl::State {
-  Eigen::MatrixX2d x, gradient;
-  double energy = 0;                          // W_I + E_P
-  double placement = 0;                       // E_P alone
-  std::vector<char> held;                   // cohesive terms not clamped
-  std::vector<std::pair<int, int>> contacts;  // W_O offenders
-};
 
 Interpolator::Impl::Impl(const Multimesh& mesh, const InterpolationParams& params, const SolverOptions& options)
     : Impl(threadLayout(validated(mesh), threadsFor(validOptions(params, options).threads, mesh.vertexCount())),
@@ -194,132 +160,6 @@ Interpolator::Impl::Frame Interpolator::Impl::makeFrame(const Eigen::VectorXd& w
   for (size_t a = 0; a < f.keys.index.size(); ++a) f.blend += f.keys.weight[a] * keys_[f.keys.index[a]];
   f.participants = nonOverlap_->participants(f.keys);
   return f;
-}
-
-void Interpolator::Impl::evaluateState(const Frame& frame, State& s) const {
-  const int n = vertexCount();
-  s.gradient.resize(n, 2);
-  // E_P first: it also initializes the gradient. Each thread sums its own vertices; the sums
-  // are added in block order (an OpenMP reduction would add them in arrival order, and frames
-  // must be bit-identical from run to run).
-  const double tie = options_.placementStiffness * vertexWeight_;  // mu m_v
-  const double *x = s.x.col(0).data(), *y = s.x.col(1).data();
-  const double *bx = frame.blend.col(0).data(), *by = frame.blend.col(1).data();
-  double *gx = s.gradient.col(0).data(), *gy = s.gradient.col(1).data();
-  const int blocks = vertexSplit_.threads();
-  std::vector<double> partial(static_cast<size_t>(blocks), 0.0);
-#pragma omp parallel num_threads(blocks)
-  for (int p = omp_get_thread_num(); p < blocks; p += omp_get_num_threads()) {
-    double sum = 0;
-#pragma omp simd reduction(+ : sum)
-    for (int v = vertexSplit_.begin(p); v < vertexSplit_.end(p); ++v) {
-      const double dx = x[v] - bx[v], dy = y[v] - by[v];
-      sum += dx * dx + dy * dy;
-      gx[v] = tie * dx;
-      gy[v] = tie * dy;
-    }
-    partial[p] = sum;
-  }
-  double placement = 0;
-  for (double part : partial) placement += part;
-  s.placement = 0.5 * tie * placement;
-  s.energy = s.placement;
-  if (frame.springs.size()) s.energy += springEnergyOf(frame.springs, frame.springTarget, s.x, s.gradient);
-  s.energy += deformation_->evaluate(s.x, frame.keys, s.gradient, vertexSplit_, triangleSplit_, params_.metric);
-  s.energy += cohesive_->evaluate(s.x, frame.w, s.gradient, s.held);
-  s.contacts.clear();
-  if (params_.nonOverlap) s.energy += nonOverlap_->evaluate(s.x, frame.participants, s.gradient, s.contacts);
-}
-
-void Interpolator::Impl::evaluateLinks(const Frame& frame, State& s) const {
-  Eigen::MatrixX2d scratch = Eigen::MatrixX2d::Zero(vertexCount(), 2);
-  cohesive_->evaluate(s.x, frame.w, scratch, s.held);
-  s.contacts.clear();
-  if (params_.nonOverlap) nonOverlap_->evaluate(s.x, frame.participants, scratch, s.contacts);
-}
-
-void Interpolator::Impl::align(const Frame& frame, const State& reference, Eigen::MatrixX2d& x) {
-  std::vector<std::pair<int, int>> links = reference.contacts;
-  const auto& terms = cohesive_->terms();
-  for (size_t j = 0; j < terms.size(); ++j)
-    if (j < reference.held.size() && reference.held[j]) {
-      links.push_back({terms[j].pair.a, terms[j].pair.c});
-      links.push_back({terms[j].pair.b, terms[j].pair.d});
-    }
-  if (links != groupLinks_) {
-    groups_.update(links);
-    groupLinks_ = std::move(links);
-  }
-  alignGroups(x, frame.blend, groups_, vertexSplit_);
-}
-
-EnergyEvaluation Interpolator::Impl::evaluate(const Eigen::MatrixX2d& x, const Eigen::VectorXd& w) const {
-  if (x.rows() != vertexCount()) throw std::invalid_argument("positions: expected " + std::to_string(vertexCount()) + " rows");
-  const Frame frame = makeFrame(w, nullptr);
-  State s;
-  s.x = toLayout(x, originalOf_) / scale_;
-  evaluateState(frame, s);
-  return {s.energy, fromLayout(s.gradient, originalOf_) / scale_};
-}
-
-int Interpolator::Impl::countOverlaps(const Eigen::MatrixX2d& x, const Eigen::VectorXd& w) const {
-  if (x.rows() != vertexCount()) throw std::invalid_argument("positions: expected " + std::to_string(vertexCount()) + " rows");
-  return nonOverlap_->countInside(toLayout(x, originalOf_) / scale_, makeFrame(w, nullptr).participants);
-}
-
-Interpolator::Impl::Step Interpolator::Impl::step(const Frame& frame, const State& s, State& candidate, Eigen::MatrixX2d& plain,
-                                      InterpolationResult& result) {
-  const double slack = 1e-12 * std::abs(result.startEnergy);  // rounding noise in E
-  const auto tryCandidate = [&]() {
-    evaluateState(frame, candidate);
-    ++result.evaluations;
-    return std::isfinite(candidate.energy) && candidate.energy <= s.energy + slack;
-  };
-  // The plain local-global step G(x) = x - H^{-1} g, placed rigidly.
-  global_->factor().step(s.x, s.gradient, plain);
-  if (!frame.springs.size()) align(frame, s, plain);
-  candidate.x.resize(vertexCount(), 2);
-  anderson_.next(flat(plain), flat(s.gradient), flatMutable(candidate.x));
-  if (tryCandidate()) return Step::kAccepted;
-  if (options_.andersonDepth > 0) {
-    anderson_.reset();
-    candidate.x = plain;
-    if (tryCandidate()) return Step::kAccepted;
-  }
-  if (s.held != global_->held()) {
-    // Cohesive pairs engaged or let go since H was built: H no longer models the energy.
-    refactorize(frame.w, frame.springs, s.held, result);
-    anderson_.reset();
-    return Step::kRefactorized;
-  }
-  for (double beta = 0.5; beta > 1e-3; beta *= 0.5) {
-    candidate.x = s.x + beta * (plain - s.x);
-    if (tryCandidate()) return Step::kAccepted;
-  }
-  // At a contact (in s or after the step), W_O's targets p_j jump as offenders come and go, so E
-  // is discontinuous along the step and no fraction of it may lower E while the plain step still
-  // makes progress. There the paper's iteration, which has no line search, goes on: the plain
-  // step is taken (measured on assets/circles-in-circles after Comesh: 13 frames stalled short of
-  // the stopping rule, 4 of them with up to 25 folded triangles and the circles crossing), or the
-  // fraction 1/2 .. 1/16 of it that climbs least: a full step into contact, H modelling no
-  // contact, raised E thirtyfold there once and sent the solve wandering.
-  if (params_.nonOverlap && contactSteps_) {
-    candidate.x = plain;
-    evaluateState(frame, candidate);
-    ++result.evaluations;
-    const bool contact = !s.contacts.empty() || !candidate.contacts.empty();
-    if (!contact || !std::isfinite(candidate.energy)) return Step::kStalled;  // E sums every vertex: finite E, finite x
-    State least = candidate;
-    for (double beta = 0.5; beta >= 0.0625; beta *= 0.5) {
-      candidate.x = s.x + beta * (plain - s.x);
-      evaluateState(frame, candidate);
-      ++result.evaluations;
-      if (std::isfinite(candidate.energy) && candidate.energy < least.energy) least = candidate;
-    }
-    candidate = std::move(least);
-    return Step::kAccepted;
-  }
-  return Step::kStalled;
 }
 
 double Interpolator::Impl::toleranceAt(const Eigen::VectorXd& w) const {

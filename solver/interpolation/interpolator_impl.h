@@ -105,4 +105,22 @@ class Interpolator::Impl {
   const std::atomic<bool>* cancel_ = nullptr;  // setCancelFlag; null: never cancelled
 };
 
+// One frame's fixed data, normalized by the shape size s (n vertices, m keys).
+struct Interpolator::Impl::Frame {
+  Eigen::VectorXd w;
+  Eigen::VectorXd springs;         // c_v (empty: no springs)
+  Eigen::MatrixX2d springTarget;   // y_v, normalized
+  ActiveKeys keys;
+  Eigen::MatrixX2d blend;         // Xbar(w) = sum_i w_i X_i, normalized
+  std::vector<int> participants;  // W_O boundary vertices
+};
+
+struct Interpolator::Impl::State {
+  Eigen::MatrixX2d x, gradient;
+  double energy = 0;                          // W_I + E_P
+  double placement = 0;                       // E_P alone
+  std::vector<char> held;                   // cohesive terms not clamped
+  std::vector<std::pair<int, int>> contacts;  // W_O offenders
+};
+
 }  // namespace ib
