@@ -190,6 +190,67 @@ TEST_CASE("interior features: at equal weights the dot's two drawings land on ea
   CHECK(apart[0] > 30);  // measured 49.3 px, the dot's move: its two drawings sit side by side (0 with)
 }
 
+TEST_CASE("interior features: with a radius the dot moves as one piece, round at mid-blend, where a plain point stretches it") {
+  // The dot's outline in each key (a circle of kDotRadius round its centre) as drawn at equal
+  // weights: its largest over its smallest distance from the drawn centre, for both keys' drawings.
+  const auto roundness = [](const Multimesh& mesh, const Eigen::MatrixX2d& x) {
+    double worst = 1;
+    for (int k = 0; k < 2; ++k) {
+      const Eigen::Vector2d centre = k == 0 ? kDotA : kDotB, drawnCentre = drawnAt(mesh, k, centre, x);
+      double nearest = INFINITY, farthest = 0;
+      for (int j = 0; j < 36; ++j) {
+        const double angle = 2 * M_PI * j / 36;
+        const Eigen::Vector2d p = centre + kDotRadius * Eigen::Vector2d(std::cos(angle), std::sin(angle));
+        const double d = (drawnAt(mesh, k, p, x) - drawnCentre).norm();
+        nearest = std::min(nearest, d);
+        farthest = std::max(farthest, d);
+      }
+      worst = std::max(worst, farthest / nearest);
+    }
+    return worst;
+  };
+  const std::string disc = "{\"at\": " + pointJson(kDotA) + ", \"radius\": 8}";
+  const std::string files[2] = {withEye(), writeScene("eye-disc", "\"eye\": " + disc, "\"eye\": " + pointJson(kDotB))};
+  double ratio[2] = {0, 0};  // plain point, disc
+  for (int withRadius = 0; withRadius < 2; ++withRadius) {
+    const Scene scene = loadScene(files[withRadius]);
+    CHECK(scene.keys[1].interiorRadii.count("eye") == static_cast<size_t>(withRadius));  // given in key a, held in b too
+    const SceneMultimesh built = optimized(scene);
+    const Multimesh& mesh = *built.multimesh;
+    Interpolator solver(mesh, interpolationParams(scene.solver), SolverOptions{});
+    const InterpolationResult frame = solver.solve(Eigen::VectorXd::Constant(2, 0.5));
+    REQUIRE(frame.converged);
+    ratio[withRadius] = roundness(mesh, frame.x);
+    if (withRadius) {  // every vertex of the disc is where it is in key a, moved by the dot's move
+      const Eigen::MatrixX2d A = mesh.keyPositions(0), B = mesh.keyPositions(1);
+      int ring = 0, inside = 0;
+      for (int v = 0; v < mesh.vertexCount(); ++v) {
+        const double r = (A.row(v).transpose() - kDotA).norm();
+        if (r > 8 + 1e-9) continue;
+        ring += r > 8 - 1e-9;
+        ++inside;
+        CHECK((B.row(v) - A.row(v) - (kDotB - kDotA).transpose()).norm() < 1e-9);
+      }
+      CHECK(ring >= 6);
+      CHECK(inside > ring);
+    }
+  }
+  INFO("dot at mid-blend, largest over smallest radius: " << ratio[0] << " as a point, " << ratio[1] << " with radius 8");
+  CHECK(ratio[1] < 1.05);
+  CHECK(ratio[0] > 1.1);  // measured 5.7 as a point, 1.01 with the radius
+}
+
+TEST_CASE("interior features: a radius that differs between keys, or discs that overlap, are input errors") {
+  const std::string differ = "{\"at\": " + pointJson(kDotB) + ", \"radius\": 6}";
+  CHECK_THROWS_WITH(loadScene(writeScene("radii", "\"eye\": {\"at\": " + pointJson(kDotA) + ", \"radius\": 8}", "\"eye\": " + differ)),
+                    Catch::Contains("key \"b\": interior feature \"eye\": radius: is 6 here and 8 in key \"a\""));
+  const std::string message =
+      buildError(writeScene("discs", "\"eye\": {\"at\": [55, 80], \"radius\": 8}, \"nose\": [62, 80]",
+                            "\"eye\": " + pointJson(kDotB) + ", \"nose\": [114, 86]"));
+  CHECK_THAT(message, Catch::Contains("interior features \"eye\" and \"nose\" are less than 9 px apart"));
+  CHECK_THAT(message, Catch::Contains("make their radii smaller"));
+}
+
 TEST_CASE("interior features: misplaced ones are input errors naming the key, the feature and what to do") {
   SECTION("outside the shape") {
     const std::string message = buildError(writeScene("outside", "\"eye\": [5, 5]", "\"eye\": " + pointJson(kDotB)));

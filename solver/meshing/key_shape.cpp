@@ -290,20 +290,33 @@ void checkInteriorFeatures(const Scene& scene, int key, const std::vector<Outlin
       throw InputError(what + (inPiece ? " lies in a hole of the drawing" : " lies outside the drawing") +
                        ": interior features are points inside the shape, placed on the drawing in every key "
                        "(a point on the outline is a \"features\" entry)");
+    const double radius = spec.interiorRadii.count(name) ? spec.interiorRadii.at(name) : 0.0;
     const auto [distance, nearest] = distanceToLoops(shape.loops, p);
-    if (distance < margin) {
+    if (distance < margin + radius) {
       std::ostringstream msg;
       msg.precision(3);
       msg << what << " is " << distance << " px from the outline or a cut (at " << formatPoint(nearest)
-          << "); an interior feature needs at least " << margin
-          << " px (one edge length): move it further inside, make it a \"features\" entry on the outline, or lower "
-             "edge_length";
+          << "); an interior feature needs at least " << margin + radius;
+      if (radius > 0)
+        msg << " px (its radius " << radius << " and one edge length): move it further inside, make its radius smaller, or "
+               "lower edge_length";
+      else
+        msg << " px (one edge length): move it further inside, make it a \"features\" entry on the outline, or lower "
+               "edge_length";
       throw InputError(msg.str());
     }
-    for (const auto& [other, q] : spec.interiorFeatures)
-      if (other < name && (q - p).norm() < 1)
-        throw InputError(where + ": interior features " + inQuotes(other) + " and " + inQuotes(name) + " are less than 1 px apart at " +
-                         formatPoint(p) + ": place them apart, or drop one");
+    for (const auto& [other, q] : spec.interiorFeatures) {
+      const double apart = 1 + radius + (spec.interiorRadii.count(other) ? spec.interiorRadii.at(other) : 0.0);
+      if (other < name && (q - p).norm() < apart) {
+        std::ostringstream msg;
+        msg.precision(3);
+        msg << where << ": interior features " << inQuotes(other) << " and " << inQuotes(name) << " are less than " << apart
+            << " px apart at " << formatPoint(p)
+            << (apart > 1 ? " (their radii and 1 px): place them apart, make their radii smaller, or drop one"
+                          : ": place them apart, or drop one");
+        throw InputError(msg.str());
+      }
+    }
   }
 }
 

@@ -8,6 +8,7 @@
 #include "meshing/stiffness_paint.h"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <memory>
 #include <sstream>
@@ -39,11 +40,52 @@ void placeBoundary(const SharedBoundary& boundary, const ReferenceMesh& mesh, in
   }
 }
 
-// Key k's interior features, in the order of ReferenceMesh::interior (by name: every key places the same).
-std::vector<Eigen::Vector2d> interiorPoints(const Scene& scene, int k) {
+// Key k's pinned interior points, in the order of ReferenceMesh::interior: its interior features
+// (by name: every key places the same), then round each one with a radius r a ring of
+// max(6, ceil(2 pi r / e)) points at distance r, e the edge length. Each ring point sits at the same
+// offset from its feature in every key, so the disc's triangles are translated copies of each
+// other in every key and the detail drawn there moves as one piece.
+std::vector<Eigen::Vector2d> interiorPoints(const Scene& scene, int k, double edgeLength) {
+  const KeySpec& key = scene.keys[k];
   std::vector<Eigen::Vector2d> out;
-  for (const auto& [name, p] : scene.keys[k].interiorFeatures) out.push_back(p);
+  for (const auto& [name, p] : key.interiorFeatures) out.push_back(p);
+  for (const auto& [name, r] : key.interiorRadii) {
+    const int n = std::max(6, static_cast<int>(std::ceil(2 * M_PI * r / edgeLength)));
+    for (int j = 0; j < n; ++j) {
+      const double angle = 2 * M_PI * j / n;
+      out.push_back(key.interiorFeatures.at(name) + r * Eigen::Vector2d(std::cos(angle), std::sin(angle)));
+    }
+  }
   return out;
+}
+
+// The reference mesh's pinned interior vertices and where each sits in every key (px): the
+// vertices of mesh.interior at interiorPoints, then every other vertex inside the disc of a feature
+// with a radius, at the same offset from the feature as in the reference key (the mesher's and the
+// split's points there too, so that the whole disc is a translated copy in every key).
+struct InteriorPins {
+  std::vector<int> vertices;
+  std::vector<std::vector<Eigen::Vector2d>> targets;  // [key][pin]
+};
+
+InteriorPins interiorPins(const Scene& scene, const ReferenceMesh& mesh, double edgeLength) {
+  InteriorPins pins;
+  pins.vertices = mesh.interior;
+  for (int k = 0; k < static_cast<int>(scene.keys.size()); ++k) pins.targets.push_back(interiorPoints(scene, k, edgeLength));
+  std::vector<char> pinned(mesh.points.size(), 0);
+  for (int v : mesh.interior) pinned[v] = 1;
+  const KeySpec& reference = scene.keys[scene.reference];
+  for (const auto& [name, r] : reference.interiorRadii) {
+    const Eigen::Vector2d centre = reference.interiorFeatures.at(name);
+    for (size_t v = 0; v < mesh.points.size(); ++v) {
+      if (pinned[v] || mesh.tags[v].arc >= 0 || (mesh.points[v] - centre).norm() >= r) continue;
+      pinned[v] = 1;
+      pins.vertices.push_back(static_cast<int>(v));
+      for (size_t k = 0; k < scene.keys.size(); ++k)
+        pins.targets[k].push_back(scene.keys[k].interiorFeatures.at(name) + (mesh.points[v] - centre));
+    }
+  }
+  return pins;
 }
 
 // Cohesive pairs of key k: the edges of each closed cut's two sides, collocated in key k.
@@ -82,7 +124,7 @@ std::string formatLength(double px) {
 }
 
 // Arcs, fractions and walk order of the reference mesh's boundary vertices, for Comesh sliding.
-ComeshBoundary comeshBoundary(const SharedBoundary& boundary, const ReferenceMesh& mesh, int keys) {
+ComeshBoundary comeshBoundary(const SharedBoundary& boundary, const ReferenceMesh& mesh, const InteriorPins& pins, int keys) {
   ComeshBoundary out;
   const size_t n = mesh.tags.size();
   out.arc.resize(n);
@@ -105,7 +147,7 @@ ComeshBoundary comeshBoundary(const SharedBoundary& boundary, const ReferenceMes
   };
   out.arcLength = [shared](int key, int arc) { return shared->arcLength(key, arc); };
   out.pinned.assign(n, 0);
-  for (int v : mesh.interior) out.pinned[v] = 1;
+  for (int v : pins.vertices) out.pinned[v] = 1;
   out.heldIn.assign(keys, std::vector<char>(n, 0));
   for (size_t v = 0; v < n; ++v) {
     const int arc = mesh.tags[v].arc, knot = arc >= 0 ? boundary.knotAt(arc, mesh.tags[v].u) : -1;
@@ -122,7 +164,7 @@ struct Attempt {
   Eigen::Vector2d failedAt = Eigen::Vector2d::Zero();
 };
 
-Attempt mapKeys(const Scene& scene, const SharedBoundary& boundary, const ReferenceMesh& mesh,
+Attempt mapKeys(const Scene& scene, const SharedBoundary& boundary, const ReferenceMesh& mesh, const InteriorPins& pins,
                 const MultimeshBuildOptions& options) {
   const int n = static_cast<int>(mesh.points.size()), m = static_cast<int>(scene.keys.size());
   Eigen::MatrixX2d rest(n, 2);
@@ -130,7 +172,7 @@ Attempt mapKeys(const Scene& scene, const SharedBoundary& boundary, const Refere
   std::vector<char> locked(n);
   for (int v = 0; v < n; ++v) locked[v] = mesh.tags[v].arc >= 0;
   const std::vector<char> onBoundary = locked;
-  for (int v : mesh.interior) locked[v] = 1;  // pinned where each key places its interior feature
+  for (int v : pins.vertices) locked[v] = 1;  // pinned where each key places its interior feature
   Attempt out;
   std::vector<Eigen::MatrixX2d> positions(m);
   for (int k = 0; k < m; ++k) {
@@ -140,7 +182,7 @@ Attempt mapKeys(const Scene& scene, const SharedBoundary& boundary, const Refere
     placeBoundary(boundary, mesh, k, x);
     // Interior features: the reference key has them in place; every other key is mapped with them
     // free first, then they are moved to the key's placements (untangleToPins).
-    const bool pinsMove = k != scene.reference && !mesh.interior.empty();
+    const bool pinsMove = k != scene.reference && !pins.vertices.empty();
     if (k != scene.reference && !harmonicFill(mesh.triangles, onBoundary, x))
       throw std::runtime_error("Tutte embedding: factorization failed");
     if (k != scene.reference || smallestTriangleArea(mesh.triangles, x).first <= 0) {
@@ -152,7 +194,7 @@ Attempt mapKeys(const Scene& scene, const SharedBoundary& boundary, const Refere
         };
       UntangleResult r = untangle(mesh.triangles, rest, x, pinsMove ? onBoundary : locked, untangleOptions);
       if (r.injective && pinsMove)
-        r = untangleToPins(mesh.triangles, rest, x, onBoundary, mesh.interior, interiorPoints(scene, k), untangleOptions);
+        r = untangleToPins(mesh.triangles, rest, x, onBoundary, pins.vertices, pins.targets[k], untangleOptions);
       if (!r.injective) {
         const Triangle& t = mesh.triangles[r.worstTriangle];
         out.failedKey = k;
@@ -207,14 +249,15 @@ BuiltScene buildMultimesh(const Scene& scene, const MultimeshBuildOptions& optio
     mo.maxEdgeLength = edgeLength;
     ReferenceMesh mesh;
     try {
-      mesh = meshReference(boundary, scene.reference, mo, interiorPoints(scene, scene.reference));
+      mesh = meshReference(boundary, scene.reference, mo, interiorPoints(scene, scene.reference, edgeLength));
     } catch (const InputError& e) {
       throw InputError(file + ": key " + inQuotes(scene.keys[scene.reference].name) + ": cannot mesh: " + e.what());
     }
-    Attempt result = mapKeys(scene, boundary, mesh, options);
+    const InteriorPins pins = interiorPins(scene, mesh, edgeLength);
+    Attempt result = mapKeys(scene, boundary, mesh, pins, options);
     if (result.multimesh) {
       built.multimesh = std::move(result.multimesh);
-      built.boundary = comeshBoundary(boundary, mesh, m);
+      built.boundary = comeshBoundary(boundary, mesh, pins, m);
       built.report = std::move(result.report);
       built.edgeLength = edgeLength;
       built.attempts = attempt + 1;

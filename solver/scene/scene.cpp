@@ -10,6 +10,7 @@
 #include <cmath>
 #include <filesystem>
 #include <set>
+#include <sstream>
 
 namespace ib {
 
@@ -69,7 +70,14 @@ KeySpec parseKey(const json& j, const Context& scene, const std::filesystem::pat
       if (it.key().empty()) throw at.in("interior_features").error("an interior feature needs a non-empty name");
       if (it.key().find('.') != std::string::npos)
         throw f.error("names with a '.' are reserved for the features cuts create; rename it without the '.' in every key");
-      key.interiorFeatures[it.key()] = point(it.value(), f);
+      if (it.value().is_object()) {  // {"at": [x, y], "radius": r}
+        requireObject(it.value(), f, {"at", "radius"});
+        if (!it.value().contains("at")) throw f.error("needs \"at\": [x, y], the point in drawing pixels");
+        key.interiorFeatures[it.key()] = point(it.value()["at"], f.in("at"));
+        if (it.value().contains("radius")) key.interiorRadii[it.key()] = number(it.value(), "radius", 0, f, 0.5, 1000);
+      } else {
+        key.interiorFeatures[it.key()] = point(it.value(), f, "in drawing pixels, or {\"at\": [x, y], \"radius\": r}");
+      }
     }
   }
   if (j.contains("cuts")) {
@@ -215,6 +223,27 @@ void checkInteriorFeatures(const Scene& scene, const Context& at) {
                                                     "each where that point of the drawing is in this key");
 }
 
+std::string shortNumber(double v) {
+  std::ostringstream out;
+  out << v;
+  return out.str();
+}
+
+// An interior feature's radius, given in one key or several (the same), holds in every key.
+void shareInteriorRadii(Scene& scene, const Context& at) {
+  std::map<std::string, std::pair<double, std::string>> radius;  // feature -> radius, the key giving it
+  for (const KeySpec& key : scene.keys)
+    for (const auto& [f, r] : key.interiorRadii) {
+      const auto [it, fresh] = radius.insert({f, {r, key.name}});
+      if (!fresh && it->second.first != r)
+        throw at.in("key " + inQuotes(key.name)).in("interior feature " + inQuotes(f)).in("radius")
+            .error("is " + shortNumber(r) + " here and " + shortNumber(it->second.first) + " in key " +
+                   inQuotes(it->second.second) + ": the disc moves rigidly, so it has one radius; give it once or the same in every key");
+    }
+  for (KeySpec& key : scene.keys)
+    for (const auto& [f, r] : radius) key.interiorRadii[f] = r.first;
+}
+
 }  // namespace
 
 std::vector<std::string> cutFeatureNames(const std::string& cut, CutKind kind) {
@@ -284,6 +313,7 @@ Scene parseScene(const std::string& source, const std::string& path) {
   if (j.contains("solver")) parseSolver(j["solver"], at.in("solver"), scene.solver);
   checkCorrespondence(scene, at);
   checkInteriorFeatures(scene, at);
+  shareInteriorRadii(scene, at);
   std::vector<std::string> names;
   for (const KeySpec& key : scene.keys) names.push_back(key.name);
   scene.timeline = j.contains("timeline") ? parseTimeline(j["timeline"], names, at.file) : defaultTimeline(names);

@@ -43,6 +43,10 @@ struct KeySpec {
   // as mesh vertices at these positions in every key, drawing pixels; "interior_features" in the
   // scene. Every key places the same names (docs/scene-format.md, "Interior features").
   std::map<std::string, Eigen::Vector2d> interiorFeatures = {};
+  // px: the radius of the disc round an interior feature that moves with it as one rigid piece
+  // (an eye, a button: the detail stays whole instead of stretching round one pinned point); the
+  // same in every key once parsed, absent for a plain point. "radius" of an interior feature.
+  std::map<std::string, double> interiorRadii = {};
   // Drawings traced by colour: a point inside each enclosed paper region that is a hole (else
   // enclosed paper is part of the shape), drawing pixels; "holes" in the scene.
   Polyline holes = {};
