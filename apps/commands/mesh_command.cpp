@@ -2,6 +2,7 @@
 
 #include "cli.h"
 #include "commands/mesh_report.h"
+#include "commands/output_folder.h"
 #include "comesh/comesh.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
@@ -13,6 +14,7 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <nlohmann/json.hpp>
 
 namespace ib {
@@ -28,7 +30,8 @@ constexpr const char* kUsage =
     "before and after.\n"
     "\n"
     "  -o, --output OUT  multimesh file to write (default: SCENE's folder, SCENE's name .ibmesh);\n"
-    "                    the initial map goes next to it as OUT's name .initial.ibmesh\n"
+    "                    the initial map goes next to it as OUT's name .initial.ibmesh; OUT's\n"
+    "                    folder is created if missing (and removed again if the command fails)\n"
     "  --json            print the summary as one JSON object\n"
     "  --no-pictures     skip the pictures, one SVG per key: OUT's name .KEY.svg, and for the\n"
     "                    initial map OUT's name .initial.KEY.svg (mesh over drawing, cohesive\n"
@@ -65,6 +68,9 @@ int runMesh(const std::vector<std::string>& rawArgs) {
   const Scene scene = loadScene(scenePath);
   const fs::path output = options.value("output", cachedMeshPath(scenePath));
   const bool pictures = !options.flag("no-pictures");
+  // OUT's folder, created before the long work and removed again if the command fails.
+  std::optional<cli::OutputFolder> folder;
+  if (!output.parent_path().empty()) folder.emplace(output.parent_path().string(), "-o");
   std::vector<std::string> names;
   for (const KeySpec& key : scene.keys) names.push_back(key.name);
 
@@ -99,6 +105,7 @@ int runMesh(const std::vector<std::string>& rawArgs) {
     if (pictures) writePictures(scene, built, *built.initial, output, "", summary["initial"]);
   }
   progress.finish();
+  if (folder) folder->keep();
   for (const std::string& note : built.notes) std::fprintf(stderr, "inbetween: note: %s\n", note.c_str());
   if (options.flag("json")) {
     std::printf("%s\n", summary.dump().c_str());
