@@ -5,6 +5,7 @@
 #include "commands/render_options.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "gpu/vulkan_check.h"
 #include "interpolation/interpolator.h"
 #include "multimesh/multimesh.h"
 #include "output/animated_png.h"
@@ -131,7 +132,18 @@ int runRender(const std::vector<std::string>& rawArgs) {
   options.target.width = size[0];
   options.target.height = size[1];
   const render::RenderMesh renderMesh = render::renderMeshOf(mesh, std::move(drawings), featureVertices(scene, mesh));
-  render::OffscreenRenderer renderer(context, renderMesh, options.target);
+  // A target the device has no memory for is the user's size, not an internal error.
+  const auto makeRenderer = [&]() {
+    try {
+      return render::OffscreenRenderer(context, renderMesh, options.target);
+    } catch (const vk::VulkanError& e) {
+      if (e.result() != VK_ERROR_OUT_OF_DEVICE_MEMORY && e.result() != VK_ERROR_OUT_OF_HOST_MEMORY) throw;
+      throw InputError("--size " + std::to_string(size[0]) + "x" + std::to_string(size[1]) + ": " + context.deviceName() +
+                       " has not enough memory for a target of that size with " + std::to_string(options.target.samples) +
+                       " samples (" + e.what() + "): choose a smaller --size or fewer --samples");
+    }
+  };
+  render::OffscreenRenderer renderer = makeRenderer();
   const render::ViewBox view = render::fitView({0, 0, double(canvasW), double(canvasH)}, size[0], size[1], 0);
 
   SolverOptions solver;
