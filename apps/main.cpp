@@ -39,6 +39,8 @@ constexpr const char* kUsage =
     ENGINE_COMMAND("  bench render   benchmark headless rendering (frames per second); one JSON object per case\n")
     ENGINE_COMMAND("  bench play     benchmark the player's window (fps, frame times, parameter latency); needs a display\n")
     "  bench cut      benchmark the solver through a cut letting go; one JSON object per case\n"
+    "  bench shape    how full-bodied and evenly paced the inbetweens are; one JSON object per scene and metric\n"
+    "  bench examples the paper's examples, as its Tables 2 and 3\n"
     "\n"
     "options:\n"
     "  -h, --help     show this help (also: inbetween COMMAND --help)\n";

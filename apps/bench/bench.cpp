@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <unistd.h>
@@ -58,7 +59,9 @@ std::string usage(const std::vector<Benchmark>& all) {
       "and \"arch\" (the instruction set this inbetween was built for).\n"
       "\n"
       "cases:\n";
-  for (const Benchmark& b : all) out += "  " + std::string(b.name) + std::string(8 - std::string(b.name).size(), ' ') + b.summary + "\n";
+  size_t width = 0;  // the longest name, then two spaces before every summary
+  for (const Benchmark& b : all) width = std::max(width, std::string(b.name).size());
+  for (const Benchmark& b : all) out += "  " + std::string(b.name) + std::string(width + 2 - std::string(b.name).size(), ' ') + b.summary + "\n";
   return out + "\nSee `inbetween bench CASE --help` for a case's options and fields.\n";
 }
 

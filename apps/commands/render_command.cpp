@@ -209,8 +209,9 @@ int runRender(const std::vector<std::string>& rawArgs) {
   std::printf("%s: rendered frames %d..%d (%dx%d, %g fps timeline) on %s in %.2f s (%.1f frames/s); multimesh %s\n",
               scenePath.c_str(), range[0], range[1], size[0], size[1], timeline.fps(), context.deviceName().c_str(), seconds,
               written / seconds, source.c_str());
-  std::printf("wrote %s .. %s and %s%s\n", framePath(dir, range[0]).c_str(), framePath(dir, range[1]).c_str(), sheetPath.c_str(),
-              options.preview ? (" and " + previewPath).c_str() : "");
+  const std::string frames =
+      range[0] == range[1] ? framePath(dir, range[0]) : framePath(dir, range[0]) + " .. " + framePath(dir, range[1]);
+  std::printf("wrote %s and %s%s\n", frames.c_str(), sheetPath.c_str(), options.preview ? (" and " + previewPath).c_str() : "");
   return 0;
 }
 
