@@ -148,9 +148,10 @@ int runRender(const std::vector<std::string>& rawArgs) {
   const render::ViewBox view = render::fitView({0, 0, double(canvasW), double(canvasH)}, size[0], size[1], 0);
 
   SolverOptions solver;
-  // A CPU rasterizer (lavapipe) draws on every core while the next frames are solved: solver
-  // threads there spin at their barriers against its threads (measured on 2 cores, a 4,000-vertex
-  // fish: 12.5 s with both, 2.5 s with one), so by default the solver takes one.
+  // On a CPU rasterizer (lavapipe), which draws on every core, solver threads gain nothing (2
+  // cores, a 4,000-vertex fish, 48 frames: 1.46 s with two, 1.43 s with one, idle), and when
+  // another process keeps a core busy they wait on each other at every barrier (41.2 s against
+  // 1.69 s), so by default the solver takes one thread there.
   solver.threads = options.threads > 0 ? options.threads : (context.software() ? 1 : 0);
   FrameStream stream(mesh, timeline, interpolationParams(scene.solver), solver, scene.dynamics);
   const int rendered = range[1] - range[0] + 1;
