@@ -234,8 +234,9 @@ InterpolationResult Interpolator::Impl::solve(const Eigen::VectorXd& w, const Ei
   contactSteps_ = true;
   bool stalledAtContact = false;
   if (params_.nonOverlap) lowest = s;
+  bool touched = !s.contacts.empty();  // some iterate of this frame was at a non-overlap contact
   while (norm > target && result.iterations < options_.maxIterations) {
-    if (cancelled()) {  // s is the last accepted iterate (outside contact, the lowest energy so far)
+    if (cancelled()) {  // s is the last accepted iterate (away from contacts, the lowest energy so far)
       result.cancelled = true;
       break;
     }
@@ -251,15 +252,16 @@ InterpolationResult Interpolator::Impl::solve(const Eigen::VectorXd& w, const Ei
         staleIterations = 0;
         continue;
       }
-      stalledAtContact = params_.nonOverlap;
+      stalledAtContact = params_.nonOverlap && (touched || !s.contacts.empty());
       break;
     }
     std::swap(s, candidate);
+    touched = touched || !s.contacts.empty();
     if (params_.nonOverlap && contactSteps_) {
       if (s.energy < lowest.energy * (1 - 1e-6)) {
         lowest = s;
         sinceLowest = 0;
-      } else if (++sinceLowest >= kContactPatience) {
+      } else if (touched && ++sinceLowest >= kContactPatience) {
         if (s.energy > lowest.energy) s = lowest;
         contactSteps_ = false;
         refactorize(frame.w, frame.springs, s.held, result);
