@@ -197,6 +197,19 @@ void onAntialiasedEdge(Polyline& loop, const ShapeMask& mask, double reach, doub
       }
     loop[i] = traced[i] + (sum / weight) * normal[i];
   }
+  // Moves along neighbouring normals can swap two points where the outline turns sharply (a tip
+  // at the image's border): a segment that turned round keeps its two ends where they were traced,
+  // until none does, so the loop stays as simple as potrace made it.
+  for (bool reverted = true; reverted;) {
+    reverted = false;
+    for (size_t i = 0; i < n; ++i) {
+      const size_t j = (i + 1) % n;
+      if ((loop[j] - loop[i]).dot(traced[j] - traced[i]) > 0 || (loop[i] == traced[i] && loop[j] == traced[j])) continue;
+      loop[i] = traced[i];
+      loop[j] = traced[j];
+      reverted = true;
+    }
+  }
 }
 
 // px: how far a traced point may move onto the drawing's edge (a sharp tip that potrace rounded
