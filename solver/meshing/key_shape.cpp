@@ -58,7 +58,7 @@ Snap snapOntoLoops(std::vector<ShapeLoop>& loops, const Eigen::Vector2d& p) {
   return best;
 }
 
-// The corners of the traced outlines (before cuts), for snapping features and cut ends onto them.
+// The corners of the traced outlines (before cuts), for snapping features onto them.
 class CornerTargets {
  public:
   CornerTargets(const std::vector<ShapeLoop>& loops, double radius, double window) : radius_(radius) {

@@ -27,9 +27,10 @@ struct KeyShapeOptions {
   // px: the farthest a placed feature or a cut's boundary end may lie from the outline; both are
   // snapped to the nearest outline point. Default 8.
   double snapDistance = 8;
-  // px: a placed feature or cut end this close to a corner of the traced outline (a sharp turn,
+  // px: a placed feature this close to a corner of the traced outline (a sharp turn,
   // meshing/outline_corners.h) lands on the corner instead: a feature placed at a star's tip means
-  // the tip, wherever the drawing's stroke puts it. 0: plain nearest point. Default 4.
+  // the tip, wherever the drawing's stroke puts it (a cut's ends take the plain nearest point).
+  // 0: plain nearest point. Default 4.
   double cornerSnap = 4;
   // px: the window of that corner detection (OutlineCornerOptions::window): a stroke's rounded
   // tip is a corner at 8 px, a curve at 4. Default 8.
