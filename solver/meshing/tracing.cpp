@@ -200,15 +200,17 @@ void onAntialiasedEdge(Polyline& loop, const ShapeMask& mask, double reach, doub
   // Moves along neighbouring normals can swap two points where the outline turns sharply (a tip
   // at the image's border): a segment that turned round keeps its two ends where they were traced,
   // until none does, so the loop stays as simple as potrace made it.
-  for (bool reverted = true; reverted;) {
-    reverted = false;
-    for (size_t i = 0; i < n; ++i) {
-      const size_t j = (i + 1) % n;
-      if ((loop[j] - loop[i]).dot(traced[j] - traced[i]) > 0 || (loop[i] == traced[i] && loop[j] == traced[j])) continue;
-      loop[i] = traced[i];
-      loop[j] = traced[j];
-      reverted = true;
-    }
+  // Each point goes back at most once, and then only its two segments are looked at again: O(n).
+  std::vector<size_t> segments(n);  // segment i runs from point i to point i + 1
+  for (size_t i = 0; i < n; ++i) segments[i] = n - 1 - i;
+  while (!segments.empty()) {
+    const size_t i = segments.back(), j = (i + 1) % n;
+    segments.pop_back();
+    if ((loop[j] - loop[i]).dot(traced[j] - traced[i]) > 0 || (loop[i] == traced[i] && loop[j] == traced[j])) continue;
+    loop[i] = traced[i];
+    loop[j] = traced[j];
+    segments.push_back((i + n - 1) % n);
+    segments.push_back(j);
   }
 }
 
