@@ -2,6 +2,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <array>
 #include <regex>
 #include <string>
 #include <vector>
@@ -84,4 +85,20 @@ TEST_CASE("mesh svg: every feature label's estimated box lies within the viewBox
   CHECK(narrow.x1 - narrow.x0 == Approx(16));
   CHECK(wide.x1 - wide.x0 == Approx(40));
   CHECK(wide.x1 == 0);
+}
+
+TEST_CASE("mesh svg: interior features are labelled dots, those with a radius inside a dashed circle of that radius") {
+  const CornerScene scene;
+  const std::string svg = meshSvg(scene.mesh, 0, scene.shape, "not a png", scene.width, scene.height,
+                                  {{"eye", {60, 50}, 12}, {"belly", {150, 80}, 0}});
+  CHECK(svg.find(">eye</text>") != std::string::npos);
+  CHECK(svg.find(">belly</text>") != std::string::npos);
+  const std::regex dashed("<circle cx=\"([-0-9.]+)\" cy=\"([-0-9.]+)\" r=\"([-0-9.]+)\" fill=\"none\"[^>]*stroke-dasharray");
+  std::vector<std::array<double, 3>> circles;
+  for (auto it = std::sregex_iterator(svg.begin(), svg.end(), dashed); it != std::sregex_iterator(); ++it)
+    circles.push_back({std::stod((*it)[1]), std::stod((*it)[2]), std::stod((*it)[3])});
+  REQUIRE(circles.size() == 1);  // the belly has no radius
+  CHECK(circles[0][0] == 60);
+  CHECK(circles[0][1] == 50);
+  CHECK(circles[0][2] == 12);
 }

@@ -35,7 +35,7 @@ constexpr const char* kUsage =
     "  --json            print the summary as one JSON object\n"
     "  --no-pictures     skip the pictures, one SVG per key: OUT's name .KEY.svg, and for the\n"
     "                    initial map OUT's name .initial.KEY.svg (mesh over drawing, cohesive\n"
-    "                    edges red, features as dots)\n"
+    "                    edges red, features and interior features as dots)\n"
     "  --no-comesh       write the initial map only, as OUT\n";
 
 namespace fs = std::filesystem;
@@ -51,8 +51,13 @@ void writePictures(const Scene& scene, const SceneMultimesh& built, const Multim
   for (size_t k = 0; k < scene.keys.size(); ++k) {
     const fs::path picture = besideOutput(output, version + "." + scene.keys[k].name + ".svg");
     const auto [width, height] = built.drawingSizes[k];
+    std::vector<InteriorMark> interior;
+    for (const auto& [name, at] : scene.keys[k].interiorFeatures) {
+      const auto radius = scene.keys[k].interiorRadii.find(name);
+      interior.push_back({name, at, radius == scene.keys[k].interiorRadii.end() ? 0.0 : radius->second});
+    }
     writeFileAtomically(picture.string(), meshSvg(mesh, static_cast<int>(k), built.shapes[k],
-                                                  readFile(scene.keys[k].drawing), width, height));
+                                                  readFile(scene.keys[k].drawing), width, height, interior));
     quality["keys"][k]["picture"] = picture.string();
   }
 }

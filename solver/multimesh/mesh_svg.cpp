@@ -59,7 +59,7 @@ TextBox estimatedTextBox(const std::string& text, double x, double y, double fon
 }
 
 std::string meshSvg(const Multimesh& mesh, int key, const KeyShape& shape, const std::string& drawingPng, int width,
-                    int height) {
+                    int height, const std::vector<InteriorMark>& interior) {
   const Eigen::MatrixX2d x = mesh.keyPositions(key);
   const double stroke = std::max(0.15, std::max(width, height) / 1500.0);  // px
   const double radius = 6 * stroke, font = 40 * stroke;
@@ -74,22 +74,29 @@ std::string meshSvg(const Multimesh& mesh, int key, const KeyShape& shape, const
   };
   const double middle = 0.5 * (x.col(0).minCoeff() + x.col(0).maxCoeff());
   std::vector<Eigen::Vector2d> labelled;  // features already drawn: collocated ones stack their labels
+  const auto mark = [&](const std::string& name, const Eigen::Vector2d& p) {
+    int below = 0;
+    for (const Eigen::Vector2d& q : labelled) below += (q - p).norm() < radius;
+    labelled.push_back(p);
+    const bool left = p.x() < middle;
+    const double tx = p.x() + (left ? -1.5 : 1.5) * radius, ty = p.y() - 1.5 * radius + 1.1 * font * below;
+    include({p.x() - radius, p.y() - radius, p.x() + radius, p.y() + radius});
+    include(estimatedTextBox(name, tx, ty, font, left));
+    features << "<circle cx=\"" << p.x() << "\" cy=\"" << p.y() << "\" r=\"" << radius << "\" fill=\"#f0a000\"/>"
+             << "<text text-anchor=\"" << (left ? "end" : "start") << "\" x=\"" << tx << "\" y=\"" << ty
+             << "\" font-size=\"" << font << "\" font-family=\"sans-serif\" fill=\"#804000\">" << escaped(name)
+             << "</text>\n";
+  };
   for (const ShapeLoop& loop : shape.loops)
-    for (size_t i = 0; i < loop.points.size(); ++i) {
-      if (loop.features[i].empty()) continue;
-      const Eigen::Vector2d& p = loop.points[i];
-      int below = 0;
-      for (const Eigen::Vector2d& q : labelled) below += (q - p).norm() < radius;
-      labelled.push_back(p);
-      const bool left = p.x() < middle;
-      const double tx = p.x() + (left ? -1.5 : 1.5) * radius, ty = p.y() - 1.5 * radius + 1.1 * font * below;
-      include({p.x() - radius, p.y() - radius, p.x() + radius, p.y() + radius});
-      include(estimatedTextBox(loop.features[i], tx, ty, font, left));
-      features << "<circle cx=\"" << p.x() << "\" cy=\"" << p.y() << "\" r=\"" << radius << "\" fill=\"#f0a000\"/>"
-               << "<text text-anchor=\"" << (left ? "end" : "start") << "\" x=\"" << tx << "\" y=\"" << ty
-               << "\" font-size=\"" << font << "\" font-family=\"sans-serif\" fill=\"#804000\">"
-               << escaped(loop.features[i]) << "</text>\n";
-    }
+    for (size_t i = 0; i < loop.points.size(); ++i)
+      if (!loop.features[i].empty()) mark(loop.features[i], loop.points[i]);
+  for (const InteriorMark& m : interior) {
+    if (m.radius > 0)
+      features << "<circle cx=\"" << m.at.x() << "\" cy=\"" << m.at.y() << "\" r=\"" << m.radius
+               << "\" fill=\"none\" stroke=\"#f0a000\" stroke-width=\"" << 2 * stroke << "\" stroke-dasharray=\""
+               << 4 * stroke << "\"/>\n";
+    mark(m.name, m.at);
+  }
   // Whole pixels, one user unit a pixel, so the drawing shows at its own size.
   const long x0 = std::lround(std::floor(bounds.x0)), y0 = std::lround(std::floor(bounds.y0));
   const long w = std::lround(std::ceil(bounds.x1)) - x0, h = std::lround(std::ceil(bounds.y1)) - y0;

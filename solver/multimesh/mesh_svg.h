@@ -8,6 +8,7 @@
 #include "multimesh/multimesh.h"
 
 #include <string>
+#include <vector>
 
 namespace ib {
 
@@ -23,8 +24,16 @@ struct TextBox {
 // 0.8 em above the baseline and 0.25 em below it.
 TextBox estimatedTextBox(const std::string& text, double x, double y, double fontSize, bool anchorEnd);
 
+// An interior feature of the key, drawn like a feature, with its disc's circle dashed when it has a
+// radius (scene field keys[].interior_features).
+struct InteriorMark {
+  std::string name;
+  Eigen::Vector2d at = Eigen::Vector2d::Zero();  // drawing px
+  double radius = 0;                             // px; 0: a plain point
+};
+
 // drawingPng: the drawing's PNG bytes; width, height: its size in pixels.
 std::string meshSvg(const Multimesh& mesh, int key, const KeyShape& shape, const std::string& drawingPng, int width,
-                    int height);
+                    int height, const std::vector<InteriorMark>& interior = {});
 
 }  // namespace ib
