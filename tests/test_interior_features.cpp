@@ -254,7 +254,7 @@ TEST_CASE("interior features: a radius that differs between keys, or discs that 
 TEST_CASE("interior features: misplaced ones are input errors naming the key, the feature and what to do") {
   SECTION("outside the shape") {
     const std::string message = buildError(writeScene("outside", "\"eye\": [5, 5]", "\"eye\": " + pointJson(kDotB)));
-    CHECK_THAT(message, Catch::Contains("key \"a\": interior feature \"eye\" at (5.0, 5.0) lies outside the drawing"));
+    CHECK_THAT(message, Catch::Contains("key \"a\": interior feature \"eye\" at (5.0, 5.0) lies outside the drawn shape"));
     CHECK_THAT(message, Catch::Contains("\"features\" entry"));
   }
   SECTION("too close to the outline") {

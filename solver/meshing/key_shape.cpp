@@ -287,7 +287,7 @@ void checkInteriorFeatures(const Scene& scene, int key, const std::vector<Outlin
       for (const Polyline& h : o.holes) crossings += rayCrossings(h, p) % 2;
     }
     if (crossings % 2 == 0)
-      throw InputError(what + (inPiece ? " lies in a hole of the drawing" : " lies outside the drawing") +
+      throw InputError(what + (inPiece ? " lies in a hole of the drawing" : " lies outside the drawn shape") +
                        ": interior features are points inside the shape, placed on the drawing in every key "
                        "(a point on the outline is a \"features\" entry)");
     const double radius = spec.interiorRadii.count(name) ? spec.interiorRadii.at(name) : 0.0;
