@@ -198,9 +198,9 @@ void onAntialiasedEdge(Polyline& loop, const ShapeMask& mask, double reach, doub
     loop[i] = traced[i] + (sum / weight) * normal[i];
   }
   // Moves along neighbouring normals can swap two points where the outline turns sharply (a tip
-  // at the image's border): a segment that turned round keeps its two ends where they were traced,
-  // until none does, so the loop stays as simple as potrace made it.
-  // Each point goes back at most once, and then only its two segments are looked at again: O(n).
+  // at the image's border): a segment that turned round gets its two ends back where they were
+  // traced, and the segments next to it are looked at again, so the loop stays as simple as potrace
+  // made it. Each point goes back at most once: O(n).
   std::vector<size_t> segments(n);  // segment i runs from point i to point i + 1
   for (size_t i = 0; i < n; ++i) segments[i] = n - 1 - i;
   while (!segments.empty()) {
