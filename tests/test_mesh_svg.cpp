@@ -1,4 +1,4 @@
-#include "multimesh/mesh_svg.h"
+#include "meshing/mesh_svg.h"
 
 #include <catch2/catch.hpp>
 

@@ -1,4 +1,4 @@
-#include "core/spatial_order.h"
+#include "multimesh/spatial_order.h"
 #include "meshing/multimesh_builder.h"
 #include "scene/scene.h"
 #include "testkit/example_scenes.h"

@@ -21,7 +21,6 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
-#include <thread>
 
 namespace ib {
 
@@ -51,7 +50,8 @@ constexpr const char* kUsage =
     "  --mesh FILE          multimesh to use (default: SCENE's .ibmesh from `inbetween mesh` when\n"
     "                       newer than the scene and drawings, else built now)\n"
     "  --no-comesh          when building the multimesh, skip Comesh Optimization\n"
-    "  --threads N          solver threads, 0 = all cores but one (at least one; default 0)\n";
+    "  --threads N          the most solver threads, 0 = all cores (default); fewer run while other\n"
+    "                       programs keep cores busy\n";
 
 namespace fs = std::filesystem;
 
@@ -93,11 +93,7 @@ int runExport(const std::vector<std::string>& rawArgs) {
   meshOptions.meshFile = arguments.value("mesh", "");
   meshOptions.comesh = !arguments.flag("no-comesh");
   SolverOptions solver;
-  // All cores but one by default: OpenMP's threads wait on each other at every barrier when
-  // another process keeps a core busy (2-core VM, a 4,000-vertex fish: idle 0.39 s with two
-  // threads, 0.46 s with one; with a busy core 19.7 s and 0.47 s).
-  const int threads = arguments.integer("threads", 0, 0, 256);
-  solver.threads = threads > 0 ? threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()) - 1);
+  solver.threads = arguments.integer("threads", 0, 0, 256);
 
   gltf::checkGltfPath(output, "-o");  // before the long work: fail fast on a wrong name
   const Scene scene = loadScene(scenePath);

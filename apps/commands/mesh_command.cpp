@@ -6,7 +6,7 @@
 #include "comesh/comesh.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
-#include "multimesh/mesh_svg.h"
+#include "meshing/mesh_svg.h"
 #include "multimesh/multimesh_io.h"
 #include "pipeline/scene_multimesh.h"
 #include "progress.h"

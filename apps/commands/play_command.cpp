@@ -41,7 +41,8 @@ constexpr const char* kUsage =
     "  --no-vsync          present as fast as possible (mailbox or immediate)\n"
     "  --device D          any (default: a GPU if present, else lavapipe), gpu or cpu\n"
     "  --validation        run with the Khronos validation layer; any message is an error\n"
-    "  --threads N         solver threads, 0 = what the UI leaves (default 0)\n";
+    "  --threads N         the most solver threads, 0 = all cores (default); fewer run while the window's\n"
+    "                      drawing or other programs keep cores busy\n";
 
 // The --set assignments (repeatable, so taken out before the parser, which keeps one value per
 // option) and the other words.

@@ -59,8 +59,8 @@ constexpr const char* kUsage =
     "  --no-comesh          when building the multimesh, skip Comesh Optimization\n"
     "  --device D           any (default: a GPU if present, else lavapipe), gpu or cpu\n"
     "  --validation         run with the Khronos validation layer; any message is an error\n"
-    "  --threads N          solver threads, 0 = all cores, or one when drawing on a CPU device (lavapipe),\n"
-    "                       whose own threads use the cores (default 0)\n";
+    "  --threads N          the most solver threads, 0 = all cores (default); fewer run while the\n"
+    "                       rasterizer or other programs keep cores busy\n";
 
 namespace fs = std::filesystem;
 
@@ -148,11 +148,7 @@ int runRender(const std::vector<std::string>& rawArgs) {
   const render::ViewBox view = render::fitView({0, 0, double(canvasW), double(canvasH)}, size[0], size[1], 0);
 
   SolverOptions solver;
-  // On a CPU rasterizer (lavapipe), which draws on every core, solver threads gain nothing (2
-  // cores, a 4,000-vertex fish, 48 frames: 1.46 s with two, 1.43 s with one, idle), and when
-  // another process keeps a core busy they wait on each other at every barrier (41.2 s against
-  // 1.69 s), so by default the solver takes one thread there.
-  solver.threads = options.threads > 0 ? options.threads : (context.software() ? 1 : 0);
+  solver.threads = options.threads;
   FrameStream stream(mesh, timeline, interpolationParams(scene.solver), solver, scene.dynamics);
   const int rendered = range[1] - range[0] + 1;
   const int every = options.sheetEvery > 0 ? options.sheetEvery : (rendered + 35) / 36;

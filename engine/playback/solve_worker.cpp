@@ -14,16 +14,11 @@ void SolveWorker::Impl::validate(const Multimesh& mesh, const Parameters& p) {
   validateStiffness(p.kappa, mesh.triangleCount());
 }
 
-int SolveWorker::solverThreads(int requested) {
-  if (requested > 0) return requested;
-  return std::max(1, static_cast<int>(std::thread::hardware_concurrency()) - 1);
-}
-
 SolveWorker::Impl::Impl(std::shared_ptr<const Multimesh> mesh, Timeline timeline, Parameters parameters,
                         const Options& options)
     : mesh_(std::move(mesh)), timeline_(std::move(timeline)), options_(options), frameCount_(timeline_.frameCount()),
       solverOptions_(options.solver) {
-  solverOptions_.threads = solverThreads(options.threads);
+  solverOptions_.threads = options.threads;
   pending_ = std::move(parameters);
   weights_ = Eigen::VectorXd::Zero(mesh_->keyCount());
   thread_ = std::thread([this] { run(); });
@@ -230,6 +225,7 @@ SolveWorker::Stats SolveWorker::Impl::stats() const {
   std::lock_guard<std::mutex> lock(mutex_);
   Stats s = stats_;
   s.busy = running_.kind != Job::Kind::kNone || plan().kind != Job::Kind::kNone;
+  s.parametersPending = pending_.has_value() || running_.kind == Job::Kind::kApply;
   s.cachedFrames = static_cast<int>(cache_.size());
   return s;
 }

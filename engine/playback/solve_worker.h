@@ -36,7 +36,9 @@ namespace ib::play {
 class SolveWorker {
  public:
   struct Options {
-    int threads = 0;           // solver threads; 0 = all cores but one (at least 1): the UI keeps one
+    // The most solver threads; 0 = all cores. The solver runs fewer while the window's drawing or
+    // other programs keep cores busy (core/thread_budget.h). Default 0.
+    int threads = 0;
     int checkpointEvery = 12;  // frames between dynamics checkpoints kept for scrubbing backwards, >= 1
     int cacheFrames = 2000;    // solved frames kept (the timeline's frames are cached for instant scrubbing), >= 1
     // The solver's settings (tolerance, iteration cap, ...); its `threads` is replaced by the
@@ -53,6 +55,7 @@ class SolveWorker {
     std::string error;          // the last solver error (empty: none; cleared when new parameters apply); the worker keeps running
     long framesSolved = 0;      // timeline frames solved since the start, the ones on the way to a wanted frame included
     long parameterSets = 0;     // parameter sets applied since the start, the constructor's included (coalesced ones are skipped)
+    bool parametersPending = false;  // a set given to setParameters is not applied yet (nor skipped for a newer one)
   };
 
   // Starts the worker thread. kappa: per-triangle painted stiffness times the kappa scale (t x 1).
@@ -87,9 +90,6 @@ class SolveWorker {
   // Blocks until the wanted frame (or weights) is solved with the newest parameters, or its solve
   // failed (Stats::error); false after `seconds`.
   bool waitIdle(double seconds);
-
-  // The solver threads Options::threads asks for.
-  static int solverThreads(int requested);
 
  private:
   class Impl;  // solve_worker.cpp

@@ -3,6 +3,7 @@
 #include "comesh/comesh_block_energy.h"
 #include "comesh/comesh_energy.h"
 #include "comesh/comesh_preconditioner.h"
+#include "core/thread_budget.h"
 #include "multimesh/mesh_quality.h"
 
 #include <Eigen/Dense>
@@ -338,6 +339,8 @@ Multimesh comeshOptimize(const Multimesh& input, const ComeshBoundary* boundary,
   SobolevPreconditioner preconditioner(threads);
   BlockEnergy blockEnergy;
   blockEnergy.setThreads(threads);
+  ThreadBudget budget(threads);  // how many of those threads to run now, asked again every step
+  TeamScope team(budget);
   const std::vector<double> odtWeights = balancedOdtWeights(mesh, remesher, options.odtBalance);
   const int m = mesh.keyCount();
   std::vector<double> stepSize(m, 0.0);
@@ -364,6 +367,7 @@ Multimesh comeshOptimize(const Multimesh& input, const ComeshBoundary* boundary,
       double innerResidual = 0;
       for (int inner = 0; inner < options.innerIterations; ++inner) {
         ++r.innerIterations;
+        team.update();
         if (options.remesh) {
           remesher.flipEdges(r.remesh);
           remesher.splitEdges(r.remesh);

@@ -115,14 +115,14 @@ double BlockEnergy::evaluate(const Eigen::MatrixX2d& x, Eigen::MatrixX2d* gradie
   const int* c1 = corner_[1].data();
   const int* c2 = corner_[2].data();
   const bool wantGradient = gradient != nullptr;
-  // Each thread sums its own block of triangles; the sums are added in thread order afterwards,
-  // so the energy is bit-identical from run to run (thread_block.h).
-  const int threads = t >= kParallelTriangles ? threads_ : 1;
-  std::vector<std::array<double, 4>> partial(threads);  // odt, area, mips, smallest
-#pragma omp parallel num_threads(threads)
-  {
-    const auto [first, size] = rowBlock(t);
-    const int begin = static_cast<int>(first), end = static_cast<int>(first + size);
+  // Each block of triangles sums its own terms; the sums are added in block order afterwards, so
+  // the energy is bit-identical from run to run, whatever the team (thread_block.h).
+  const int blocks = t >= kParallelTriangles ? threads_ : 1;
+  std::vector<std::array<double, 4>> partial(static_cast<size_t>(blocks));  // odt, area, mips, smallest
+#pragma omp parallel num_threads(teamFor(blocks))
+  for (int p = omp_get_thread_num(); p < blocks; p += omp_get_num_threads()) {
+    const int begin = static_cast<int>(static_cast<long>(t) * p / blocks);
+    const int end = static_cast<int>(static_cast<long>(t) * (p + 1) / blocks);
     double odt = 0, area = 0, mips = 0, smallest = kInfinity;
 #pragma omp simd reduction(+ : odt, area, mips) reduction(min : smallest)
     for (int k = begin; k < end; ++k) {
@@ -166,7 +166,7 @@ double BlockEnergy::evaluate(const Eigen::MatrixX2d& x, Eigen::MatrixX2d* gradie
         M11[k] = 2 * d0x + r11 * over - shrink * e00;
       }
     }
-    partial[omp_get_thread_num()] = {odt, area, mips, smallest};
+    partial[static_cast<size_t>(p)] = {odt, area, mips, smallest};
   }
   double odt = 0, area = 0, mips = 0, smallest = kInfinity;
   for (const auto& p : partial) {

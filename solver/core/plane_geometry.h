@@ -1,13 +1,15 @@
 // Small exact-enough predicates on points, segments and loops in the drawing plane (pixels).
 #pragma once
 
-#include "meshing/tracing.h"
-
 #include <Eigen/Core>
 #include <initializer_list>
 #include <string>
+#include <vector>
 
 namespace ib {
+
+// An open list of points; as a loop, the last point connects back to the first.
+using Polyline = std::vector<Eigen::Vector2d>;
 
 // "(x, y)" with one decimal, for messages about places in a drawing.
 std::string formatPoint(const Eigen::Vector2d& p);

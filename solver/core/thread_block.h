@@ -5,11 +5,17 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <omp.h>
 #include <utility>
 #include <vector>
 
 namespace ib {
+
+// Threads for a region over `blocks` blocks: at most the calling thread's OpenMP team size
+// (omp_get_max_threads: every core, or what a TeamScope (thread_budget.h) set for the work under
+// way). The blocks' results never depend on it: a thread takes blocks self, self + team, ...
+inline int teamFor(int blocks) { return std::max(1, std::min(blocks, omp_get_max_threads())); }
 
 // The calling thread's share [first, first + count) of `size` rows, split evenly.
 inline std::pair<Eigen::Index, Eigen::Index> rowBlock(Eigen::Index size) {

@@ -170,7 +170,7 @@ double DeformationEnergy::evaluate(const Eigen::MatrixX2d& x, const ActiveKeys& 
   const int blocks = vertices.threads();
   std::vector<double> partial(static_cast<size_t>(blocks), 0.0);
   deferred_.resize(static_cast<size_t>(blocks));
-#pragma omp parallel num_threads(blocks)
+#pragma omp parallel num_threads(teamFor(blocks))
   {
     // The team may have fewer threads than blocks.
     const int self = omp_get_thread_num(), team = omp_get_num_threads();

@@ -71,7 +71,7 @@ double Interpolator::Impl::gradientNorm(const Eigen::MatrixX2d& g) const {
   std::vector<double> partial(static_cast<size_t>(blocks), 0.0);
   const double* gx = g.col(0).data();
   const double* gy = g.col(1).data();
-#pragma omp parallel num_threads(blocks)
+#pragma omp parallel num_threads(teamFor(blocks))
   for (int p = omp_get_thread_num(); p < blocks; p += omp_get_num_threads()) {
     double largest = 0;
 #pragma omp simd reduction(max : largest)
@@ -94,7 +94,8 @@ Interpolator::Impl::Impl(ThreadLayout layout, const InterpolationParams& params,
       vertexSplit_(std::move(layout.vertices)),
       triangleSplit_(std::move(layout.triangleSplit)),
       groups_(layout.mesh.vertexCount(), meshEdges(layout.mesh)),
-      anderson_(options.andersonDepth, vertexSplit_.threads()) {
+      anderson_(options.andersonDepth, vertexSplit_.threads()),
+      budget_(vertexSplit_.threads()) {
   const Multimesh& mesh = layout.mesh;
   anderson_.setRowSplit(vertexSplit_, 2);  // the x and y columns of an n x 2 matrix
   const std::vector<Triangle>& triangles = layout.triangles;
@@ -173,6 +174,7 @@ double Interpolator::Impl::toleranceAt(const Eigen::VectorXd& w) const {
 InterpolationResult Interpolator::Impl::solve(const Eigen::VectorXd& w, const Eigen::MatrixX2d* warmStart,
                                         const VertexSprings* springs) {
   const auto started = std::chrono::steady_clock::now();
+  TeamScope team(budget_);  // the threads this solve runs on, asked again every iteration
   const Frame frame = makeFrame(w, springs);
   State s;
   if (warmStart) {
@@ -240,6 +242,7 @@ InterpolationResult Interpolator::Impl::solve(const Eigen::VectorXd& w, const Ei
       result.cancelled = true;
       break;
     }
+    team.update();
     const Step outcome = step(frame, s, candidate, plain, result);
     if (outcome == Step::kRefactorized) continue;
     if (outcome == Step::kStalled) {  // no decrease along the step: not converged, unless at a contact's kink
@@ -306,6 +309,7 @@ InterpolationResult Interpolator::Impl::solve(const Eigen::VectorXd& w, const Ei
   // its gradient need not vanish at the minimum: a solve that finds no descent from its lowest
   // iterate has reached it, if the gradient there is within 10 times the rule (circles-in-circles'
   // frame 24: 1.2 times).
+  result.threads = std::min(threads(), team.threads());
   result.converged = norm <= converges || (stalledAtContact && norm <= 10 * converges);
   result.relativeResidual = relative(norm);
   result.energy = s.energy;

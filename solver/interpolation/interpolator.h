@@ -85,8 +85,10 @@ struct SolverOptions {
   bool updateFactor = true;
   double placementStiffness = 1e-5; // mu of the placement tie E_P (see placement.h), > 0
   double nonOverlapStiffness = 1;   // W_O penalty k, relative to the mean diagonal of the ARAP matrix
-  int threads = 0;                  // threads for the local step and solves; 0 = all cores
-                                    // (meshes under 4000 vertices always run on one)
+  // The most threads for the local step and solves; 0 = all cores. Meshes under 4000 vertices
+  // always run on one; fewer than this run while other programs keep cores busy
+  // (core/thread_budget.h: the thread policy). Default 0.
+  int threads = 0;
 };
 
 struct InterpolationResult {
@@ -100,6 +102,8 @@ struct InterpolationResult {
   bool converged = false;             // residual below tolerance, or |g| at rounding level, or at a
                                       // non-overlap contact's kink (docs/solver.md); never a small step
   bool cancelled = false;             // stopped early by the cancel flag (setCancelFlag): x is the best iterate so far
+  int threads = 1;                    // threads the last iteration ran on (SolverOptions::threads, fewer
+                                      // while other programs keep cores busy: core/thread_budget.h)
   int factorizations = 0;             // numeric factorizations of H during this solve
   int factorUpdates = 0;              // rank-one updates of H's factor for changed held pairs
   double factorMilliseconds = 0;      // wall time of both, part of milliseconds

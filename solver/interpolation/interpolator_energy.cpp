@@ -38,7 +38,7 @@ void Interpolator::Impl::evaluateState(const Frame& frame, State& s) const {
   double *gx = s.gradient.col(0).data(), *gy = s.gradient.col(1).data();
   const int blocks = vertexSplit_.threads();
   std::vector<double> partial(static_cast<size_t>(blocks), 0.0);
-#pragma omp parallel num_threads(blocks)
+#pragma omp parallel num_threads(teamFor(blocks))
   for (int p = omp_get_thread_num(); p < blocks; p += omp_get_num_threads()) {
     double sum = 0;
 #pragma omp simd reduction(+ : sum)

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "core/thread_block.h"
+#include "core/thread_budget.h"
 #include "interpolation/cohesive_energy.h"
 #include "interpolation/deformation_energy.h"
 #include "interpolation/global_matrix.h"
@@ -100,6 +101,7 @@ class Interpolator::Impl {
   std::vector<std::pair<int, int>> groupLinks_;  // the links groups_ was last built from
   std::unique_ptr<GlobalMatrix> global_;   // H and its factor; built from the energies above
   AndersonAcceleration anderson_;          // history kept across frames
+  ThreadBudget budget_;                    // how many of the layout's threads to run now
   double gradientFloor_ = 0;               // absolute |g|_inf below which a start is converged
   double stiffnessScale_ = 0;              // see stiffnessScale()
   const std::atomic<bool>* cancel_ = nullptr;  // setCancelFlag; null: never cancelled

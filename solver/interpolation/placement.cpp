@@ -117,7 +117,7 @@ void alignAll(Eigen::MatrixX2d& x, const Eigen::MatrixX2d& target, const RowSpli
   const double count = static_cast<double>(x.rows());
   std::vector<std::array<double, 4>> centroids(static_cast<size_t>(blocks));
   std::vector<std::array<double, 2>> turns(static_cast<size_t>(blocks));
-#pragma omp parallel num_threads(blocks)
+#pragma omp parallel num_threads(teamFor(blocks))
   {
     // The team may have fewer threads than blocks.
     const int self = omp_get_thread_num(), team = omp_get_num_threads();

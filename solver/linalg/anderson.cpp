@@ -73,7 +73,7 @@ void AndersonAcceleration::next(const Eigen::Ref<const Eigen::VectorXd>& gx,
   // Per block: [gram row | dF^T f], added in block order below (bit-identical every run). The
   // team may have fewer threads than blocks.
   std::vector<std::array<double, 2 * kMaxDepth>> partial(static_cast<size_t>(blocks));
-#pragma omp parallel num_threads(blocks)
+#pragma omp parallel num_threads(teamFor(blocks))
   for (int p = omp_get_thread_num(); p < blocks; p += omp_get_num_threads()) {
     double gramRow[kMaxDepth] = {}, projected[kMaxDepth] = {};
     // Plain variables, not a structured binding: clang cannot use a binding in an omp simd loop.
@@ -147,7 +147,7 @@ void AndersonAcceleration::next(const Eigen::Ref<const Eigen::VectorXd>& gx,
     out = gx;
     return;
   }
-#pragma omp parallel num_threads(blocks)
+#pragma omp parallel num_threads(teamFor(blocks))
   for (int p = omp_get_thread_num(); p < blocks; p += omp_get_num_threads()) {
     const auto [firstInPart, count] = block(p);
     // In chunks of rows that stay in L1 while every column is subtracted from them (the same

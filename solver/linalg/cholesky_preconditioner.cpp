@@ -1,5 +1,7 @@
 #include "linalg/cholesky_preconditioner.h"
 
+#include "core/thread_block.h"
+
 #include <iostream>  // Eigen's MetisSupport reports through std::cerr without including it
 #include <Eigen/MetisSupport>
 #include <Eigen/SparseCholesky>
@@ -289,7 +291,7 @@ void CholeskyPreconditioner::solveWork(const Eigen::MatrixX2d& b, const Eigen::M
   // b goes into the permuted, interleaved system and the result comes out of it on all threads,
   // in the regions of the subtree solves. Every load comes before the first write, so out may be b.
   const int parts = static_cast<int>(part_.size());
-#pragma omp parallel num_threads(parts)
+#pragma omp parallel num_threads(teamFor(parts))
   {
 #pragma omp for schedule(static)
     for (int i = 0; i < n_; ++i) {
@@ -301,7 +303,7 @@ void CholeskyPreconditioner::solveWork(const Eigen::MatrixX2d& b, const Eigen::M
   }
   forward(top_, x);
   backward(top_, x);
-#pragma omp parallel num_threads(parts)
+#pragma omp parallel num_threads(teamFor(parts))
   {
     for (int p = omp_get_thread_num(); p < parts; p += omp_get_num_threads()) backward(part_[p], x);
 #pragma omp barrier
@@ -334,7 +336,7 @@ void CholeskyPreconditioner::solvePreordered(const Eigen::MatrixX2d& b, const Ei
   // thread touches only the rows it owns. Every load of b comes before the first store, so out
   // may be b.
   const int parts = static_cast<int>(part_.size());
-#pragma omp parallel num_threads(parts)
+#pragma omp parallel num_threads(teamFor(parts))
   for (int p = omp_get_thread_num(); p < parts; p += omp_get_num_threads()) {
     load(partStart_[p], partStart_[p + 1]);
     forward(part_[p], x);
@@ -343,7 +345,7 @@ void CholeskyPreconditioner::solvePreordered(const Eigen::MatrixX2d& b, const Ei
   forward(top_, x);
   backward(top_, x);
   store(partStart_.back(), n_);
-#pragma omp parallel num_threads(parts)
+#pragma omp parallel num_threads(teamFor(parts))
   for (int p = omp_get_thread_num(); p < parts; p += omp_get_num_threads()) {
     backward(part_[p], x);
     store(partStart_[p], partStart_[p + 1]);

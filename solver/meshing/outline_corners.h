@@ -9,14 +9,6 @@
 
 namespace ib {
 
-// How the shared boundary treats the keys' outline corners (meshing/shared_boundary.h); "corners" in the
-// scene.
-enum class CornerHandling {
-  kPaired,    // "paired": corners that correspond in every key pair up like features
-  kVertices,  // "vertices": those, and a vertex at every other corner of every key (held there only)
-  kOff,       // "off": arc length between features only, as in the paper
-};
-
 struct OutlineCorner {
   double s = 0;     // px: arc length along the loop from its point 0
   double turn = 0;  // radians: signed turning there, > 0 convex (the shape lies to the left)

@@ -2,7 +2,7 @@
 
 #include "core/error.h"
 #include "core/plane_geometry.h"
-#include "core/spatial_order.h"
+#include "multimesh/spatial_order.h"
 
 #include <algorithm>
 #include <map>

@@ -9,30 +9,10 @@
 // midpoints between the centroid and its corners.
 #pragma once
 
-#include "meshing/tracing.h"
 #include "multimesh/multimesh.h"
-
-#include <string>
-#include <vector>
+#include "scene/stiffness.h"
 
 namespace ib {
-
-struct StiffnessRegion {
-  std::string name;
-  int key = 0;        // the key it is drawn over
-  Polyline polygon;   // >= 3 points, that key's drawing pixels
-  double kappa = 1;   // > 0
-};
-
-struct StiffnessPaint {
-  double soft = 0.1;   // kappa of a black pixel, > 0; default 0.1
-  double stiff = 10;   // kappa of a white pixel, > soft; default 10
-  std::string image;   // path of the stiffness image (PNG); empty: none
-  int imageKey = -1;   // the key the image is drawn over
-  std::vector<StiffnessRegion> regions;
-
-  bool empty() const { return image.empty() && regions.empty(); }
-};
 
 // Sets every triangle's kappa: `base` (the scene's kappa), then the image, then the regions. The
 // multimesh's key positions must be in drawing pixels. Throws InputError naming the image when it

@@ -3,7 +3,9 @@
 // (x right, y down, pixel (i, j) covering [i, i+1] x [j, j+1]).
 #pragma once
 
+#include "core/plane_geometry.h"
 #include "core/png_image.h"
+#include "scene/meshing_options.h"
 
 #include <Eigen/Core>
 #include <array>
@@ -14,30 +16,11 @@
 
 namespace ib {
 
-// An open list of points; as a loop, the last point connects back to the first.
-using Polyline = std::vector<Eigen::Vector2d>;
-
 // One connected piece of a drawing: its outer loop (positive signed area) and its holes
 // (negative signed area), each without repeated end point.
 struct Outline {
   Polyline outer;
   std::vector<Polyline> holes;
-};
-
-// Drawings traced by colour: which paper-coloured regions enclosed by the drawing are holes.
-// kMarked: only those a key marks with a point (KeySpec::holes); the rest are part of the shape.
-// kEnclosedPaper: every one (scene `tracing.holes: "enclosed-paper"`). See meshing/paper.h.
-enum class PaperHoles { kMarked, kEnclosedPaper };
-
-struct TracingOptions {
-  double tolerance = 0.05;     // px: potrace's curve-joining tolerance and our flattening error
-  double minArea = 16;        // px^2: components and holes with less area are specks, dropped
-  int alphaThreshold = 128;   // with alpha: a pixel belongs to the shape when alpha >= this (1..255)
-  // Without alpha: the background colour (RGB) and the RGB distance above which a pixel belongs
-  // to the shape. Set background to use it even when the drawing has alpha.
-  std::optional<std::array<int, 3>> background;  // default: white for drawings without alpha
-  double colorThreshold = 64;                    // 1..441
-  PaperHoles holes = PaperHoles::kMarked;        // default: enclosed paper is part of the shape
 };
 
 // A pixel mask, row-major, true where the shape is. For a drawing traced by alpha, also its

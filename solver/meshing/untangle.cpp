@@ -1,5 +1,7 @@
 #include "meshing/untangle.h"
 
+#include "core/thread_budget.h"
+
 #include <Eigen/Dense>
 #include <Eigen/SparseCholesky>
 #include <algorithm>
@@ -7,6 +9,7 @@
 #include <cmath>
 #include <deque>
 #include <limits>
+#include <omp.h>
 #include <tuple>
 
 namespace ib {
@@ -44,7 +47,8 @@ class WinslowEnergy {
     cornerGradient_.resize(count);
     triangleEnergy_.resize(count);
     double lowest = std::numeric_limits<double>::infinity();
-#pragma omp parallel for reduction(min : lowest) schedule(static) if (count > 4000)
+    const int team = count > 4000 ? budget_.threads() : 1;
+#pragma omp parallel for num_threads(team) reduction(min : lowest) schedule(static)
     for (int t = 0; t < count; ++t) {
       const auto& tri = triangles_[t];
       const Eigen::Vector2d p0(x[2 * tri[0]], x[2 * tri[0] + 1]);
@@ -89,6 +93,9 @@ class WinslowEnergy {
   std::vector<double> weight_;            // per triangle: rest area over total rest area
   mutable std::vector<Eigen::Matrix2d> cornerGradient_;  // per triangle: scratch of evaluate(), 2 x 2
   mutable std::vector<double> triangleEnergy_;           // per triangle: scratch of evaluate()
+  // The threads of the triangle loop (all cores, fewer while other programs need some): each
+  // triangle writes its own entries, so the result does not depend on them.
+  mutable ThreadBudget budget_{omp_get_max_threads()};
 };
 
 // L-BFGS with a backtracking Armijo line search; free coordinates only (mask 1 = free).

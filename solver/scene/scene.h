@@ -6,10 +6,10 @@
 
 #include "animation/dynamics.h"
 #include "animation/timeline.h"
+#include "core/plane_geometry.h"
 #include "interpolation/shape_metric.h"
-#include "meshing/outline_corners.h"
-#include "meshing/stiffness_paint.h"
-#include "meshing/tracing.h"
+#include "scene/meshing_options.h"
+#include "scene/stiffness.h"
 
 #include <Eigen/Core>
 #include <map>

@@ -5,7 +5,7 @@
 #include "animation/dynamics.h"
 #include "animation/timeline.h"
 #include "core/json_fields.h"
-#include "meshing/stiffness_paint.h"
+#include "scene/stiffness.h"
 
 #include <nlohmann/json.hpp>
 #include <string>

@@ -1,4 +1,4 @@
-#include "core/spatial_order.h"
+#include "multimesh/spatial_order.h"
 
 #include <algorithm>
 #include <cstdint>

@@ -1,0 +1,30 @@
+// What a scene paints as per-triangle stiffness kappa, the "stiffness" field (docs/scene-format.md,
+// paper section 7.3): a grayscale image over one key and named polygons with a kappa each.
+// meshing/stiffness_paint.h paints them onto a multimesh.
+#pragma once
+
+#include "core/plane_geometry.h"
+
+#include <string>
+#include <vector>
+
+namespace ib {
+
+struct StiffnessRegion {
+  std::string name;
+  int key = 0;        // the key it is drawn over
+  Polyline polygon;   // >= 3 points, that key's drawing pixels
+  double kappa = 1;   // > 0
+};
+
+struct StiffnessPaint {
+  double soft = 0.1;   // kappa of a black pixel, > 0; default 0.1
+  double stiff = 10;   // kappa of a white pixel, > soft; default 10
+  std::string image;   // path of the stiffness image (PNG); empty: none
+  int imageKey = -1;   // the key the image is drawn over
+  std::vector<StiffnessRegion> regions;
+
+  bool empty() const { return image.empty() && regions.empty(); }
+};
+
+}  // namespace ib
