@@ -3,6 +3,7 @@
 #include "bench/bench.h"
 #include "commands/export_command.h"
 #include "commands/mesh_command.h"
+#include "commands/parameters_command.h"
 #ifdef INBETWEEN_WITH_ENGINE
 #include "commands/play_command.h"
 #include "commands/render_command.h"
@@ -33,6 +34,7 @@ constexpr const char* kUsage =
     "  export SCENE   export the scene's animation as glTF 2.0 (.glb / .gltf) (see `inbetween export --help`)\n"
     ENGINE_COMMAND("  render SCENE   render the scene's animation to PNG frames, headless (see `inbetween render --help`)\n")
     ENGINE_COMMAND("  play SCENE     play the scene in a window with every parameter as a slider (see `inbetween play --help`)\n")
+    "  parameters     every parameter a scene, --set and the player take (see `inbetween parameters --help`)\n"
     "  bench interp   benchmark the interpolation solver; one JSON object per case\n"
     "  bench comesh   benchmark Comesh Optimization; one JSON object per case\n"
     "  bench anim     benchmark playing every bundled scene's timeline; one JSON object per case\n"
@@ -43,7 +45,8 @@ constexpr const char* kUsage =
     "  bench examples the paper's examples, as its Tables 2 and 3\n"
     "\n"
     "options:\n"
-    "  -h, --help     show this help (also: inbetween COMMAND --help)\n";
+    "  -h, --help     show this help (also: inbetween COMMAND --help)\n"
+    "  --version      show the version\n";
 
 int run(const std::vector<std::string>& args) {
   if (args.empty()) {
@@ -55,9 +58,14 @@ int run(const std::vector<std::string>& args) {
     std::fputs(kUsage, stdout);
     return 0;
   }
+  if (command == "--version" || command == "version") {
+    std::printf("inbetween %s (built for %s)\n", INBETWEEN_VERSION, INBETWEEN_ARCH);
+    return 0;
+  }
   const std::vector<std::string> rest(args.begin() + 1, args.end());
   if (command == "bench") return ib::runBench(rest);
   if (command == "mesh") return ib::runMesh(rest);
+  if (command == "parameters") return ib::runParameters(rest);
   if (command == "export") return ib::runExport(rest);
 #ifdef INBETWEEN_WITH_ENGINE
   if (command == "render") return ib::runRender(rest);

@@ -2,6 +2,7 @@
 #include "animation/warm_start.h"
 #include "interpolation/interpolator.h"
 #include "meshing/multimesh_builder.h"
+#include "pipeline/scene_frames.h"
 #include "scene/scene.h"
 #include "testkit/example_scenes.h"
 
@@ -19,7 +20,7 @@ TEST_CASE("animation: every bundled asset plays its timeline with finite frames 
     INFO("asset " << file);
     const Scene scene = loadScene(file);
     const BuiltScene built = buildMultimesh(scene, MultimeshBuildOptions{});
-    FrameStream stream(*built.multimesh, scene.timeline, interpolationParams(scene.solver), {}, scene.dynamics);
+    FrameStream stream = sceneFrameStream(scene, *built.multimesh);
     withDynamics += scene.dynamics.enabled();
     size_t pairs = 0;
     for (int key = 0; key < built.multimesh->keyCount(); ++key) pairs += built.multimesh->cohesivePairs(key).size();
@@ -75,7 +76,7 @@ TEST_CASE("interpolation: on every bundled asset, halving a step in w halves the
     // Known limitation: with non-overlap on, solves where pieces press on each other stall or
     // run to the iteration cap short of the stopping rule (circles-in-circles, key 0 to 1; the
     // frames keep the pieces apart, tests/test_examples.cpp). docs/solver.md, "Non-overlap".
-    if (scene.solver.nonOverlap) {
+    if (scene.interpolation.nonOverlap) {
       WARN(file << ": skipped, non-overlap solves at contact do not converge yet");
       ++withNonOverlap;
       continue;
@@ -84,7 +85,7 @@ TEST_CASE("interpolation: on every bundled asset, halving a step in w halves the
     const Multimesh& mesh = *built.multimesh;
     const Eigen::MatrixX2d X0 = mesh.keyPositions(0);
     const double size = (X0.colwise().maxCoeff() - X0.colwise().minCoeff()).norm();
-    Interpolator solver(mesh, interpolationParams(scene.solver), SolverOptions{});
+    Interpolator solver(mesh, scene.interpolation, SolverOptions{});
     const int m = mesh.keyCount();
     for (int key = 0; key + 1 < m; ++key) {
       INFO("asset " << file << ", key " << key << " to " << key + 1);

@@ -227,7 +227,7 @@ TEST_CASE("even spacing: every bundled asset plays evenly spaced with finite fra
     std::vector<TimelineSegment> segments = scene.timeline.segments();
     for (TimelineSegment& segment : segments) segment.spacingKind = SegmentSpacing::kEven;
     const Timeline& t = scene.timeline;
-    FrameStream stream(*built.multimesh, Timeline(t.fps(), t.loops(), t.marks(), segments), interpolationParams(scene.solver), {},
+    FrameStream stream(*built.multimesh, Timeline(t.fps(), t.loops(), t.marks(), segments), scene.interpolation, {},
                        scene.dynamics);
     const double size = stream.shapeSize();
     // Every mark's weights at its time, exactly.

@@ -6,6 +6,7 @@
 #include "core/plane_geometry.h"
 #include "interpolation/interpolator.h"
 #include "multimesh/multimesh.h"
+#include "pipeline/scene_frames.h"
 #include "pipeline/scene_multimesh.h"
 #include "scene/scene.h"
 
@@ -126,8 +127,8 @@ TEST_CASE("examples: cell-splitting's cells touch at the first key and are apart
   int count = 0;
   const std::vector<int> piece = pieces(mesh, &count);
   REQUIRE(count == 2);
-  const std::vector<AnimationFrame> frames = play(scene, mesh, interpolationParams(scene.solver));
-  const FrameStream probe(mesh, scene.timeline, interpolationParams(scene.solver), SolverOptions{}, scene.dynamics);
+  const std::vector<AnimationFrame> frames = play(scene, mesh, scene.interpolation);
+  const FrameStream probe = sceneFrameStream(scene, mesh);
   const double size = probe.shapeSize();
   CHECK(gapBetweenPieces(mesh, piece, frames.front().x) < 1.0);
   CHECK(gapBetweenPieces(mesh, piece, mesh.keyPositions(mesh.keyCount() - 1)) > 0.05 * size);
@@ -138,7 +139,7 @@ TEST_CASE("examples: cell-splitting's cells touch at the first key and are apart
 
 TEST_CASE("examples: circles-in-circles keeps its circles apart in every frame with non-overlap, each frame converged and unfolded, and not without") {
   const Scene scene = loadScene(exampleFile("circles-in-circles"));
-  REQUIRE(scene.solver.nonOverlap);
+  REQUIRE(scene.interpolation.nonOverlap);
   const Multimesh& mesh = *optimized("circles-in-circles").multimesh;
   int count = 0;
   const std::vector<int> piece = pieces(mesh, &count);
@@ -147,7 +148,7 @@ TEST_CASE("examples: circles-in-circles keeps its circles apart in every frame w
   int crossing = 0;
   int unconverged = 0, folded = 0;
   std::string which;
-  for (const AnimationFrame& frame : play(scene, mesh, interpolationParams(scene.solver))) {
+  for (const AnimationFrame& frame : play(scene, mesh, scene.interpolation)) {
     crossing += piecesCross(edges, frame.x);
     unconverged += !frame.converged;
     if (!frame.converged) which += " " + std::to_string(frame.index) + " (" + std::to_string(frame.iterations) + " iterations)";
@@ -157,12 +158,12 @@ TEST_CASE("examples: circles-in-circles keeps its circles apart in every frame w
   INFO("unconverged frames:" << which);
   CHECK(unconverged == 0);
   CHECK(folded == 0);
-  SceneSolverParams without = scene.solver;
+  InterpolationParams without = scene.interpolation;
   without.nonOverlap = false;
   Scene plain = scene;
   plain.dynamics = DynamicsParams{};  // the plain interpolation: overlap comes from the keys alone
   int crossingWithout = 0;
-  for (const AnimationFrame& frame : play(plain, mesh, interpolationParams(without))) crossingWithout += piecesCross(edges, frame.x);
+  for (const AnimationFrame& frame : play(plain, mesh, without)) crossingWithout += piecesCross(edges, frame.x);
   CHECK(crossingWithout > 0);
 }
 
@@ -175,7 +176,7 @@ TEST_CASE("examples: flying-bird stays full-bodied, no frame under 90% of the ar
     for (const Triangle& t : mesh.triangles()) keyArea[k] += signedArea(x, t);
   }
   double smallest = std::numeric_limits<double>::infinity();
-  for (const AnimationFrame& frame : play(scene, mesh, interpolationParams(scene.solver))) {
+  for (const AnimationFrame& frame : play(scene, mesh, scene.interpolation)) {
     double area = 0, expected = 0;
     for (const Triangle& t : mesh.triangles()) area += signedArea(frame.x, t);
     for (int k = 0; k < mesh.keyCount(); ++k) expected += frame.weights[k] * keyArea[k];
@@ -203,7 +204,7 @@ TEST_CASE("examples: circles-open's ring is whole at its first frame and open ac
   // The middle of the cut drawn in the ring, from its hole to its outline.
   const Polyline& cut = scene.keys[scene.keyIndex("ring")].cuts.at(0).points;
   const Eigen::Vector2d middle = 0.5 * (cut.front() + cut.back());
-  const std::vector<AnimationFrame> frames = play(scene, mesh, interpolationParams(scene.solver));
+  const std::vector<AnimationFrame> frames = play(scene, mesh, scene.interpolation);
   CHECK(covered(mesh, frames.front().x, middle));
   const TimelineMark& open = scene.timeline.marks().at(1);
   REQUIRE(open.label == "open");

@@ -11,6 +11,7 @@
 #include "multimesh/multimesh.h"
 #include "output/render_mesh.h"
 #include "pipeline/key_drawings.h"
+#include "pipeline/scene_frames.h"
 #include "pipeline/scene_multimesh.h"
 #include "scene/scene.h"
 #include "testkit/example_scenes.h"
@@ -73,7 +74,7 @@ Exported writeScene(const std::string& file, const GltfExportOptions& options, c
   for (const KeySpec& key : scene.keys) exported.keyNames.push_back(key.name);
   for (const RgbaImage& d : drawings) exported.canvas = {std::max(exported.canvas[0], d.width), std::max(exported.canvas[1], d.height)};
   const render::RenderMesh renderMesh = render::renderMeshOf(*mesh, std::move(drawings));
-  FrameStream stream(*mesh, scene.timeline, interpolationParams(scene.solver), SolverOptions{}, scene.dynamics);
+  FrameStream stream = sceneFrameStream(scene, *mesh);
   Exported result;
   result.baked = bakeAnimation(stream, renderMesh.cutSides, {0, std::min(lastFrame, stream.frameCount() - 1)});
   result.report = writeGltf(result.baked, renderMesh, exported, options, out);

@@ -42,7 +42,7 @@ TEST_CASE("solver: every frame of a scene with dynamics is finite at the far end
   const BuiltScene built = buildMultimesh(scene, MultimeshBuildOptions{});
   for (const Extreme& extreme : extremes) {
     INFO(extreme.name);
-    InterpolationParams params = interpolationParams(scene.solver);
+    InterpolationParams params = scene.interpolation;
     DynamicsParams dynamics = scene.dynamics;
     Eigen::VectorXd kappa = built.multimesh->stiffnesses();
     extreme.apply(params, dynamics, kappa);
@@ -64,6 +64,6 @@ TEST_CASE("solver: every frame of a scene with dynamics is finite at the far end
   // Past the accepted range, a stiffness is refused with a message naming it (exit code 2).
   Multimesh stiff = *built.multimesh;
   stiff.setStiffness(3, 1e300);
-  CHECK_THROWS_WITH(FrameStream(stiff, scene.timeline, interpolationParams(scene.solver), SolverOptions{}, scene.dynamics),
+  CHECK_THROWS_WITH(FrameStream(stiff, scene.timeline, scene.interpolation, SolverOptions{}, scene.dynamics),
                     Catch::Contains("kappa[") && Catch::Contains("[1e-9, 1e9]"));
 }

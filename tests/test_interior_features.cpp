@@ -165,7 +165,7 @@ TEST_CASE("interior features: at equal weights the dot's two drawings land on ea
     const Scene scene = loadScene(withFeature ? eyeFile : plainFile);
     const SceneMultimesh built = optimized(scene);
     const Multimesh& mesh = *built.multimesh;
-    Interpolator solver(mesh, interpolationParams(scene.solver), SolverOptions{});
+    Interpolator solver(mesh, scene.interpolation, SolverOptions{});
     const InterpolationResult frame = solver.solve(half);
     REQUIRE(frame.converged);
     const Eigen::Vector2d drawnA = drawnAt(mesh, 0, centreA, frame.x), drawnB = drawnAt(mesh, 1, centreB, frame.x);
@@ -217,7 +217,7 @@ TEST_CASE("interior features: with a radius the dot moves as one piece, round at
     CHECK(scene.keys[1].interiorRadii.count("eye") == static_cast<size_t>(withRadius));  // given in key a, held in b too
     const SceneMultimesh built = optimized(scene);
     const Multimesh& mesh = *built.multimesh;
-    Interpolator solver(mesh, interpolationParams(scene.solver), SolverOptions{});
+    Interpolator solver(mesh, scene.interpolation, SolverOptions{});
     const InterpolationResult frame = solver.solve(Eigen::VectorXd::Constant(2, 0.5));
     REQUIRE(frame.converged);
     ratio[withRadius] = roundness(mesh, frame.x);

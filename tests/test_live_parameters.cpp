@@ -5,11 +5,14 @@
 
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "scene/parameters.h"
 #include "scene/scene.h"
 #include "testkit/drawings.h"
+#include "testkit/errors.h"
 #include "testkit/example_scenes.h"
 
 #include <catch2/catch.hpp>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -18,6 +21,8 @@
 using namespace ib;
 using ib::play::LiveParameters;
 namespace fs = std::filesystem;
+
+using ::test::inputError;
 
 namespace {
 
@@ -37,16 +42,6 @@ std::string written(const std::string& name, const std::string& folder) {
   return (fs::path(dir) / name / "scene.json").string();
 }
 
-// The message of the InputError `f` throws ("" when it throws none).
-template <typename F>
-std::string inputError(F&& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
 
 using Json = nlohmann::ordered_json;
 
@@ -76,51 +71,92 @@ Json readJson(const std::string& path) { return Json::parse(readFile(path)); }
 TEST_CASE("live parameters: they start from the scene's values, each its own default") {
   const Scene scene = parsed("square-arch-stretch");
   const LiveParameters p(scene);
-  CHECK(p.get("tau") == scene.solver.tau);
-  CHECK(p.get("alpha") == scene.solver.alpha);
-  CHECK(p.get("lambda") == scene.solver.lambda);
+  CHECK(p.get("tau") == scene.interpolation.cohesive.tau);
+  CHECK(p.get("alpha") == scene.interpolation.cohesive.alpha);
+  CHECK(p.get("lambda") == scene.interpolation.cohesive.lambda);
   CHECK(p.get("non_overlap") == 0);
+  CHECK(p.get("metric") == 0);  // shared
   CHECK(p.get("kappa_scale") == 1);
   CHECK(p.get("dynamics") == 1);  // epsilon 0.6 > 0
   CHECK(p.get("epsilon") == 0.6);
   CHECK(p.get("mu") == 1);
   CHECK(p.get("gravity_y") == 3);
   CHECK(p.get("anchor") == scene.dynamics.anchor);
-  const std::vector<std::string> names = {"tau", "alpha", "lambda", "kappa_scale", "non_overlap", "dynamics", "epsilon",
-                                          "mu", "gravity_x", "gravity_y", "wind_x", "wind_y", "anchor"};
-  REQUIRE(p.all().size() == names.size());
-  for (size_t i = 0; i < names.size(); ++i) {
-    const auto& parameter = p.all()[i];
-    CHECK(parameter.name == names[i]);
-    CHECK(parameter.value == parameter.initial);
-    CHECK(parameter.min <= parameter.value);
-    CHECK(parameter.value <= parameter.max);
-    CHECK_FALSE(parameter.help.empty());
-    if (parameter.logScale) CHECK(parameter.min > 0);
+  // One control per live row of the table, in its order.
+  std::vector<std::string> live;
+  for (const ParameterSpec& spec : parameterTable())
+    if (spec.live) live.push_back(spec.name);
+  REQUIRE(p.all().size() == live.size());
+  for (size_t i = 0; i < live.size(); ++i) {
+    const play::Control& c = p.all()[i];
+    CHECK(c.spec->name == live[i]);
+    CHECK(c.value == c.initial);
+    CHECK_FALSE(c.spec->meaning.empty());
   }
   CHECK(p.generation() == 0);
 }
 
+TEST_CASE("live parameters: a slider covers every value the scene file takes, typed entry the rest of an open range") {
+  const LiveParameters p(parsed("square-arch-notch"));
+  for (const play::Control& c : p.all()) {
+    const ParameterSpec& spec = *c.spec;
+    if (spec.kind != ParameterKind::kNumber) continue;
+    INFO(spec.name);
+    const double lowest = c.scale.fromSlider(c.sliderMin), highest = c.scale.fromSlider(c.sliderMax);
+    CHECK(highest >= spec.max * (1 - 1e-12));
+    if (!spec.minOpen) CHECK(lowest <= spec.min + 1e-12 * std::abs(spec.min));
+    else if (spec.logScale) CHECK(lowest <= 1e-12 * (1 + 1e-9));  // tau 1e-9 (bundled scenes) is on the slider
+    else CHECK(lowest <= spec.min + 1e-3 * (spec.max - spec.min));
+    // The slider's scale maps back and forth, and moves the same way as the value.
+    for (int k = 0; k <= 8; ++k) {
+      const double s = c.sliderMin + k * (c.sliderMax - c.sliderMin) / 8;
+      CHECK(c.scale.toSlider(c.scale.fromSlider(s)) == Approx(s).margin(1e-9));
+      if (k > 0) CHECK(c.scale.fromSlider(s) > c.scale.fromSlider(s - (c.sliderMax - c.sliderMin) / 8));
+    }
+  }
+  // tau down to the smallest value the file takes, through --set as through a typed entry.
+  LiveParameters q(parsed("square-arch-notch"));
+  q.setFromText("tau=1e-9");
+  CHECK(q.get("tau") == 1e-9);
+  q.setFromText("tau=1e-300");
+  CHECK(q.get("tau") == 1e-300);
+  q.setFromText("tau=1e6");
+  CHECK(q.get("tau") == 1e6);
+  q.setFromText("lambda=0");
+  CHECK(q.get("lambda") == 0);
+  q.setFromText("mu=1e6");
+  CHECK(q.get("mu") == 1e6);
+}
+
+TEST_CASE("live parameters: the metric plays as the scene asks, and as the player sets it") {
+  Scene scene = parsed("square-arch-stretch");
+  scene.interpolation.metric = ShapeMetric::kPerKey;
+  LiveParameters p(scene);
+  CHECK(p.get("metric") == 1);
+  CHECK(p.scene(scene).interpolation.metric == ShapeMetric::kPerKey);
+  p.setFromText("metric=shared");
+  CHECK(p.scene(scene).interpolation.metric == ShapeMetric::kShared);
+}
+
 TEST_CASE("live parameters: dynamics start off for a scene without them, and off means epsilon 0") {
-  LiveParameters p(parsed("square-arch-notch"));
+  const Scene scene = parsed("square-arch-notch");
+  LiveParameters p(scene);
   CHECK(p.get("dynamics") == 0);
-  CHECK(p.dynamics().epsilon == 0);
+  CHECK_FALSE(p.frameOptions().dynamics);
   p.set("dynamics", 1);
-  CHECK(p.dynamics().epsilon == p.get("epsilon"));
-  CHECK(p.dynamics().epsilon > 0);
+  CHECK(p.frameOptions().dynamics);
+  CHECK(p.scene(scene).dynamics.epsilon == p.get("epsilon"));
+  CHECK(p.get("epsilon") > 0);
 }
 
 TEST_CASE("live parameters: a slider's range widens to hold a scene value outside it") {
   Scene scene = parsed("square-arch-notch");
-  scene.solver.tau = 5;
-  scene.dynamics.mu = 50;
+  scene.interpolation.cohesive.tau = 1e-14;
   LiveParameters p(scene);
-  CHECK(p.all()[0].max == 5);
-  CHECK(p.get("tau") == 5);
-  CHECK(p.get("mu") == 50);
-  p.set("tau", 2);
-  p.set("mu", 30);
-  CHECK_FALSE(inputError([&] { p.set("tau", 6); }).empty());
+  const play::Control& tau = p.all()[0];
+  REQUIRE(tau.spec->name == "lambda");  // the table's order: lambda, tau, ...
+  CHECK(p.all()[1].scale.fromSlider(p.all()[1].sliderMin) == Approx(1e-14));
+  CHECK(p.get("tau") == 1e-14);
 }
 
 TEST_CASE("live parameters: set, get and reset change one value and bump the generation on every change") {
@@ -133,30 +169,32 @@ TEST_CASE("live parameters: set, get and reset change one value and bump the gen
   p.set("wind_x", -2);
   CHECK(p.generation() == 2);
   p.reset("tau");
-  CHECK(p.get("tau") == p.all()[0].initial);
+  CHECK(p.get("tau") == parsed("square-arch-stretch").interpolation.cohesive.tau);
   CHECK(p.generation() == 3);
   p.set("lambda", 1e5);
   p.set("non_overlap", 1);
   p.resetAll();
-  for (const auto& parameter : p.all()) CHECK(parameter.value == parameter.initial);
+  for (const play::Control& c : p.all()) CHECK(c.value == c.initial);
   CHECK(p.generation() == 8);  // resetAll: wind_x, lambda, non_overlap
 }
 
-TEST_CASE("live parameters: unknown names, out-of-range and non-finite values are input errors naming the parameter and its range") {
+TEST_CASE("live parameters: unknown names, values out of the file's range and non-finite values are input errors naming the parameter and its range") {
   LiveParameters p(parsed("square-arch-stretch"));
-  CHECK_THAT(inputError([&] { p.set("tao", 1); }), Catch::Contains("\"tao\"") && Catch::Contains("tau"));
-  CHECK_THAT(inputError([&] { p.get("kappa"); }), Catch::Contains("\"kappa\""));
+  CHECK_THAT(inputError([&] { p.set("tao", 1); }), Catch::Contains("\"tao\"") && Catch::Contains("did you mean \"tau\""));
+  CHECK_THAT(inputError([&] { p.get("edge_length"); }),
+             Catch::Contains("\"edge_length\"") && Catch::Contains("changes the multimesh") && Catch::Contains("render --set"));
   CHECK_THAT(inputError([&] { p.set("alpha", 1.5); }), Catch::Contains("\"alpha\"") && Catch::Contains("[0, 1]"));
-  CHECK_THAT(inputError([&] { p.set("tau", 0); }), Catch::Contains("\"tau\"") && Catch::Contains("[1e-06, 1]"));
+  CHECK_THAT(inputError([&] { p.set("tau", 0); }), Catch::Contains("\"tau\"") && Catch::Contains("(0, 1e+06]"));
   CHECK_THAT(inputError([&] { p.set("mu", std::numeric_limits<double>::infinity()); }), Catch::Contains("\"mu\""));
   CHECK_THAT(inputError([&] { p.set("lambda", std::nan("")); }), Catch::Contains("\"lambda\""));
-  CHECK_THAT(inputError([&] { p.set("dynamics", 0.5); }), Catch::Contains("\"dynamics\"") && Catch::Contains("0 (off) or 1"));
+  CHECK_THAT(inputError([&] { p.set("dynamics", 0.5); }), Catch::Contains("\"dynamics\"") && Catch::Contains("on or off"));
   CHECK(p.generation() == 0);
   CHECK(p.get("alpha") == 0.5);
 }
 
-TEST_CASE("live parameters: interpolation() and dynamics() carry the current values") {
-  LiveParameters p(parsed("square-arch-stretch"));
+TEST_CASE("live parameters: scene() and frameOptions() carry the current values through the one mapping") {
+  const Scene base = parsed("square-arch-stretch");
+  LiveParameters p(base);
   p.set("tau", 2e-4);
   p.set("alpha", 0.25);
   p.set("lambda", 8000);
@@ -168,23 +206,23 @@ TEST_CASE("live parameters: interpolation() and dynamics() carry the current val
   p.set("wind_x", 0.5);
   p.set("wind_y", 0.25);
   p.set("anchor", 0.4);
+  p.set("settle", 0.5);
   p.set("kappa_scale", 3);
-  const InterpolationParams i = p.interpolation();
-  CHECK(i.cohesive.tau == 2e-4);
-  CHECK(i.cohesive.alpha == 0.25);
-  CHECK(i.cohesive.lambda == 8000);
-  CHECK(i.nonOverlap);
-  const DynamicsParams d = p.dynamics();
-  CHECK(d.epsilon == 0.3);
-  CHECK(d.mu == 2.5);
-  CHECK(d.gravity == Eigen::Vector2d(1, -2));
-  CHECK(d.wind == Eigen::Vector2d(0.5, 0.25));
-  CHECK(d.anchor == 0.4);
-  CHECK(d.settle == DynamicsParams{}.settle);  // the fields without a slider are the scene's
-  CHECK(p.kappaScale() == 3);
+  const Scene s = p.scene(base);
+  CHECK(s.interpolation.cohesive.tau == 2e-4);
+  CHECK(s.interpolation.cohesive.alpha == 0.25);
+  CHECK(s.interpolation.cohesive.lambda == 8000);
+  CHECK(s.interpolation.nonOverlap);
+  CHECK(s.dynamics.epsilon == 0.3);
+  CHECK(s.dynamics.mu == 2.5);
+  CHECK(s.dynamics.gravity == Eigen::Vector2d(1, -2));
+  CHECK(s.dynamics.wind == Eigen::Vector2d(0.5, 0.25));
+  CHECK(s.dynamics.anchor == 0.4);
+  CHECK(s.dynamics.settle == 0.5);
+  CHECK(p.frameOptions().kappaScale == 3);
   p.set("dynamics", 0);
-  CHECK(p.dynamics().epsilon == 0);
-  CHECK(p.dynamics().mu == 2.5);
+  CHECK_FALSE(p.frameOptions().dynamics);
+  CHECK(p.scene(base).dynamics.mu == 2.5);
 }
 
 TEST_CASE("live parameters: setFromText parses NAME=VALUE and names the text when it cannot") {
@@ -195,11 +233,15 @@ TEST_CASE("live parameters: setFromText parses NAME=VALUE and names the text whe
   CHECK(p.get("non_overlap") == 1);
   p.setFromText("dynamics=1");
   CHECK(p.get("dynamics") == 1);
+  p.setFromText("solver.alpha=0.75");  // the field's name works too
+  CHECK(p.get("alpha") == 0.75);
   CHECK_THAT(inputError([&] { p.setFromText("tau"); }), Catch::Contains("\"tau\""));
   CHECK_THAT(inputError([&] { p.setFromText("tau=abc"); }), Catch::Contains("tau=abc") && Catch::Contains("not a number"));
   CHECK_THAT(inputError([&] { p.setFromText("tau=1e-3x"); }), Catch::Contains("tau=1e-3x"));
   CHECK_THAT(inputError([&] { p.setFromText("size=3"); }), Catch::Contains("size=3") && Catch::Contains("unknown"));
   CHECK_THAT(inputError([&] { p.setFromText("alpha=2"); }), Catch::Contains("alpha=2") && Catch::Contains("[0, 1]"));
+  CHECK_THAT(inputError([&] { p.setFromText("metric=perkey"); }),
+             Catch::Contains("metric=perkey") && Catch::Contains("did you mean \"per_key\""));
 }
 
 TEST_CASE("saveParameters: saved parameters load back as tuned, every other field and the key order unchanged") {
@@ -224,11 +266,11 @@ TEST_CASE("saveParameters: saved parameters load back as tuned, every other fiel
       play::saveParameters(file, p, 30);
 
       const Scene saved = loadScene(file);
-      CHECK(saved.solver.tau == 1e-4);
-      CHECK(saved.solver.alpha == 0.3);
-      CHECK(saved.solver.lambda == 16000);
-      CHECK(saved.solver.nonOverlap);
-      CHECK(saved.solver.kappa == 2 * scene.solver.kappa);
+      CHECK(saved.interpolation.cohesive.tau == 1e-4);
+      CHECK(saved.interpolation.cohesive.alpha == 0.3);
+      CHECK(saved.interpolation.cohesive.lambda == 16000);
+      CHECK(saved.interpolation.nonOverlap);
+      CHECK(saved.kappa == 2 * scene.kappa);
       REQUIRE(saved.stiffness.regions.size() == scene.stiffness.regions.size());
       for (size_t r = 0; r < saved.stiffness.regions.size(); ++r)
         CHECK(saved.stiffness.regions[r].kappa == 2 * scene.stiffness.regions[r].kappa);
@@ -276,7 +318,7 @@ TEST_CASE("saveParameters: kappa_scale scales a painted image's stiffness range,
   const Scene saved = loadScene(file);
   CHECK(saved.stiffness.soft == Approx(0.05).epsilon(1e-12));
   CHECK(saved.stiffness.stiff == Approx(5).epsilon(1e-12));
-  CHECK(saved.solver.kappa == 0.5);
+  CHECK(saved.kappa == 0.5);
 }
 
 TEST_CASE("saveParameters: a scene file that cannot be written is an input error naming it, and the old file stays") {

@@ -206,9 +206,12 @@ TEST_CASE("mesh size: max_vertices and sampling are scene fields with bounds and
   CHECK(parse("\"sampling\": \"nearest\", ").sampling == ArtworkSampling::kNearest);
   CHECK(parse("\"sampling\": \"linear\", ").sampling == ArtworkSampling::kLinear);
   CHECK(parse("\"sampling\": \"auto\", ").sampling == ArtworkSampling::kAuto);
-  CHECK_THROWS_WITH(parse("\"sampling\": \"bilinear\", "), Catch::Contains("fields.json: sampling: \"bilinear\" is not \"linear\""));
+  CHECK_THROWS_WITH(parse("\"sampling\": \"bilinear\", "),
+                    Catch::Contains("fields.json: sampling: \"bilinear\" is not \"auto\"") && Catch::Contains("did you mean \"linear\""));
   CHECK_THROWS_WITH(parse("\"max_vertices\": 10, "), Catch::Contains("max_vertices"));
-  CHECK_THROWS_WITH(parse("\"edge_length\": 0, "), Catch::Contains("edge_length"));
+  CHECK_THROWS_WITH(parse("\"max_vertices\": 1000.5, "), Catch::Contains("max_vertices: must be a whole number"));
+  CHECK(parse("\"edge_length\": 0, ").edgeLength == 0);  // 0 follows the drawings, as absent
+  CHECK_THROWS_WITH(parse("\"edge_length\": 0.25, "), Catch::Contains("edge_length: 0.25 is out of range 0 (follow the drawings) or [0.5"));
 }
 
 TEST_CASE("sampling: auto is nearest for hard-edged small-palette drawings only") {

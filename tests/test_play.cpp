@@ -257,7 +257,7 @@ TEST_CASE("play: Save parameters writes the tuned values into the scene, which t
   play::PlayerSession saved(std::make_unique<play::SceneReloader>(path), {});
   CHECK(saved.parameters().get("tau") == 0.004);
   CHECK(saved.parameters().get("lambda") == 2500);
-  for (const play::Parameter& p : saved.parameters().all()) CHECK(p.value == p.initial);
+  for (const play::Control& c : saved.parameters().all()) CHECK(c.value == c.initial);
   // The frames themselves, played from the timeline's start as a stream: the worker's frames near
   // the notch's release depend on which frames it happened to solve first (a frame solved cold
   // there settles up to 18 px away, in the energy's other minimum), so they are compared here
@@ -271,14 +271,14 @@ TEST_CASE("play: Save parameters writes the tuned values into the scene, which t
     REQUIRE(frame.index == kFrame);
     return frame.x;
   };
-  InterpolationParams tunedParams = interpolationParams(original.solver);
+  InterpolationParams tunedParams = original.interpolation;
   tunedParams.cohesive.tau = 0.004;
   tunedParams.cohesive.lambda = 2500;
-  const Eigen::MatrixX2d fromSaved = frameOf(saved.scene().scene, interpolationParams(saved.scene().scene.solver));
+  const Eigen::MatrixX2d fromSaved = frameOf(saved.scene().scene, saved.scene().scene.interpolation);
   // Within 1e-3 px, not bit for bit: with the tuned session's worker busy beside it, two plays
   // of the stream came 5.8e-6 px apart (seen once in five runs).
   CHECK((fromSaved - frameOf(original, tunedParams)).cwiseAbs().maxCoeff() < 1e-3);
-  CHECK((fromSaved - frameOf(original, interpolationParams(original.solver))).cwiseAbs().maxCoeff() > 5.0);
+  CHECK((fromSaved - frameOf(original, original.interpolation)).cwiseAbs().maxCoeff() > 5.0);
 }
 
 TEST_CASE("play: the keyboard shortcuts drive the transport, weights mode, the overlays and closing", "[.window]") {

@@ -151,7 +151,7 @@ TEST_CASE("render: every bundled cut glued in an inbetween shows no seam (alpha 
         return std::array<uint8_t, 4>{255, 255, 255, 255};
       }));
     const RenderMesh art = renderMeshOf(mesh, bundled.drawings), coverage = renderMeshOf(mesh, blank);
-    Interpolator interpolator(mesh, interpolationParams(scene.solver), SolverOptions{});
+    Interpolator interpolator(mesh, scene.interpolation, SolverOptions{});
     for (int k = 0; k < m; ++k) {
       if (mesh.cohesivePairs(k).empty()) continue;
       // Key k, whose cuts are glued, with as much of the keys that draw them open as keeps them
@@ -172,7 +172,7 @@ TEST_CASE("render: every bundled cut glued in an inbetween shows no seam (alpha 
       }
       INFO(file << " at w = " << w.transpose() << ": cut gaps up to " << widest << " px");
       if (widest >= 0.25) {
-        CHECK(scene.solver.tau <= 1e-5);  // only a scene that asks for it lets go at once
+        CHECK(scene.interpolation.cohesive.tau <= 1e-5);  // only a scene that asks for it lets go at once
         continue;
       }
       const RgbaImage image = OffscreenRenderer(context, art, bundled.target(k)).render(bundled.frame(k, x, w));

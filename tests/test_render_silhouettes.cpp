@@ -3,6 +3,7 @@
 #include "animation/frame_stream.h"
 #include "core/plane_geometry.h"
 #include "interpolation/interpolator.h"
+#include "pipeline/scene_frames.h"
 #include "pipeline/scene_multimesh.h"
 #include "render_fixtures.h"
 #include "renderers/offscreen_renderer.h"
@@ -83,7 +84,7 @@ TEST_CASE("render: every frame of every bundled scene is opaque more than 1.5 px
     std::vector<Edge> outline;
     for (const Edge& e : mesh.boundaryEdges())
       if (!onCut[e[0]] || !onCut[e[1]]) outline.push_back(e);
-    FrameStream stream(mesh, scene.timeline, interpolationParams(scene.solver), SolverOptions{}, scene.dynamics);
+    FrameStream stream = sceneFrameStream(scene, mesh);
     int worstFrame = -1, worstInside = 0, worstOutside = 0, rims = 0, lowest = 255;
     Eigen::Vector2d lowestAt(0, 0);
     while (!stream.done()) {

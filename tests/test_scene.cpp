@@ -51,10 +51,10 @@ TEST_CASE("scene: a valid scene reads with its keys, features, cuts, parameters 
   CHECK(s.keys[0].cuts[0].points.size() == 2);
   CHECK(s.keys[1].features.at("split.tip") == Eigen::Vector2d(64, 58));
   CHECK(s.tracing.minArea == 9);
-  CHECK(s.solver.tau == 0.002);
-  CHECK(s.solver.alpha == 0.3);
-  CHECK(s.solver.kappa == 1);  // default
-  CHECK(s.solver.nonOverlap);
+  CHECK(s.interpolation.cohesive.tau == 0.002);
+  CHECK(s.interpolation.cohesive.alpha == 0.3);
+  CHECK(s.kappa == 1);  // default
+  CHECK(s.interpolation.nonOverlap);
   // Absent animation fields: every key a second apart, no dynamics, nothing painted.
   REQUIRE(s.timeline.marks().size() == 2);
   CHECK(s.timeline.marks()[1].time == 1);

@@ -179,7 +179,7 @@ TEST_CASE("scene reloader: saved parameters reload the scene keeping its multime
   tuned.set("epsilon", 0.2);
   saveAndReload(reloader, tuned, 10);
   CHECK(reloader.current().mesh == before);
-  CHECK(reloader.current().scene.solver.tau == 1e-4);
+  CHECK(reloader.current().scene.interpolation.cohesive.tau == 1e-4);
   CHECK(reloader.current().scene.dynamics.epsilon == 0.2);
   CHECK(reloader.current().scene.timeline.fps() == 12);
 
@@ -187,7 +187,7 @@ TEST_CASE("scene reloader: saved parameters reload the scene keeping its multime
   stiffer.set("kappa_scale", 2);
   saveAndReload(reloader, stiffer, 20);
   CHECK(reloader.current().mesh != before);
-  CHECK(reloader.current().scene.solver.kappa == 2);
+  CHECK(reloader.current().scene.kappa == 2);
 }
 
 TEST_CASE("scene reloader: open loads another scene in the background; a failed open keeps the current one") {

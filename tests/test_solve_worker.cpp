@@ -71,7 +71,7 @@ TEST_CASE("solve worker: a worker's frames are the frame stream's, without and w
   REQUIRE(stretch.scene.dynamics.enabled());
   std::vector<Case> cases;
   cases.push_back({"strip", shared(test::strip(2000, 2)), defaultTimeline({"rest", "bend"}), {}, {}});
-  cases.push_back({"square-arch-stretch", stretch.mesh, stretch.scene.timeline, interpolationParams(stretch.scene.solver),
+  cases.push_back({"square-arch-stretch", stretch.mesh, stretch.scene.timeline, stretch.scene.interpolation,
                    stretch.scene.dynamics});
   for (const Case& c : cases) {
     INFO(c.name);
@@ -168,7 +168,7 @@ TEST_CASE("solve worker: parameters set mid-solve cancel it and are applied, the
 TEST_CASE("solve worker: scrubbing back with dynamics starts from a checkpoint, not from frame 0") {
   const SceneMesh stretch = bundled("square-arch-stretch");
   REQUIRE(stretch.scene.dynamics.enabled());
-  const InterpolationParams params = interpolationParams(stretch.scene.solver);
+  const InterpolationParams params = stretch.scene.interpolation;
   // frames solved to show frame 40, then frame 30 once it has left the cache
   const auto scrub = [&](int checkpointEvery) {
     SolveWorker::Options options;

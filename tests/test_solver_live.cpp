@@ -172,7 +172,7 @@ TEST_CASE("frame stream: parameters and stiffness changed before the first frame
   DynamicsParams dynamics = d.scene.dynamics;
   dynamics.epsilon = 0.9;
   dynamics.gravity = Eigen::Vector2d(1, 2);
-  FrameStream live(mesh, d.scene.timeline, interpolationParams(d.scene.solver), {}, d.scene.dynamics);
+  FrameStream live(mesh, d.scene.timeline, d.scene.interpolation, {}, d.scene.dynamics);
   live.setParameters(changedParams(), dynamics);
   live.setStiffness(kappa);
   FrameStream fresh(withStiffness(mesh, kappa), d.scene.timeline, changedParams(), {}, dynamics);
@@ -208,8 +208,8 @@ TEST_CASE("frame stream: a parameter change takes effect from the next frame, an
 
 TEST_CASE("frame stream: a cancelled frame comes back marked and the stream solves that frame again") {
   const DynamicScene d = squareArchStretch();
-  FrameStream stream(*d.mesh, d.scene.timeline, interpolationParams(d.scene.solver), {}, d.scene.dynamics);
-  FrameStream reference(*d.mesh, d.scene.timeline, interpolationParams(d.scene.solver), {}, d.scene.dynamics);
+  FrameStream stream(*d.mesh, d.scene.timeline, d.scene.interpolation, {}, d.scene.dynamics);
+  FrameStream reference(*d.mesh, d.scene.timeline, d.scene.interpolation, {}, d.scene.dynamics);
   std::atomic<bool> cancel{false};
   stream.setCancelFlag(&cancel);
   for (int k = 0; k < 6; ++k) stream.next(), reference.next();
@@ -237,7 +237,7 @@ TEST_CASE("frame stream: with dynamics, the 10 frames after resuming at frame 12
   // uninterrupted stream is itself 7e-4 from the frames solved to 1e-10).
   const DynamicScene d = squareArchStretch();
   REQUIRE(d.scene.dynamics.enabled());
-  const InterpolationParams params = interpolationParams(d.scene.solver);
+  const InterpolationParams params = d.scene.interpolation;
   SolverOptions options;
   options.relativeTolerance = 1e-4;
   FrameStream stream(*d.mesh, d.scene.timeline, params, options, d.scene.dynamics);

@@ -149,7 +149,7 @@ TEST_CASE("timeline: without marks every key comes in scene order, a second apar
 
 TEST_CASE("timeline: every malformed field is an input error naming the file, the mark and the field") {
   const std::vector<std::pair<std::string, std::string>> cases = {
-      {R"({"fps": 0})", "t.json: timeline: fps: 0.0 is out of range"},
+      {R"({"fps": 0})", "t.json: timeline: fps: 0 is out of range (0, 1000]"},
       {R"({"speed": 1})", "timeline: unknown field \"speed\""},
       {R"({"marks": []})", "timeline: marks: must be an array of at least one mark"},
       {R"({"marks": [{"key": "a"}]})", "mark 1: missing field \"time\""},

@@ -6,6 +6,7 @@
 #include "core/error.h"
 #include "interpolation/interpolator.h"
 #include "multimesh/multimesh.h"
+#include "pipeline/scene_frames.h"
 #include "pipeline/scene_multimesh.h"
 #include "progress.h"
 #include "scene/scene.h"
@@ -42,9 +43,9 @@ nlohmann::json playScene(const std::filesystem::path& file, bool comesh, int thr
     progress.update(name + ": " + stage, 0);  // the bar shows the frames played
   });
   const Multimesh& mesh = *built.multimesh;
-  SolverOptions options;
-  options.threads = threads;
-  FrameStream stream(mesh, scene.timeline, interpolationParams(scene.solver), options, scene.dynamics);
+  FrameOptions options;
+  options.solver.threads = threads;
+  FrameStream stream = sceneFrameStream(scene, mesh, options);
   double total = 0, slowest = 0, deviation = 0;
   long iterations = 0;
   int converged = 0;

@@ -7,6 +7,7 @@
 #include "core/error.h"
 #include "interpolation/interpolator.h"
 #include "multimesh/multimesh.h"
+#include "pipeline/scene_frames.h"
 #include "pipeline/scene_multimesh.h"
 #include "progress.h"
 #include "scene/scene.h"
@@ -109,9 +110,9 @@ bool animationCurve(const Timeline& timeline) {
 
 nlohmann::json animationTable(const std::string& name, const Scene& scene, const Multimesh& mesh, int threads,
                               const std::optional<PaperRow>& p, cli::Progress& progress) {
-  SolverOptions options;
-  options.threads = threads;
-  FrameStream stream(mesh, scene.timeline, interpolationParams(scene.solver), options, scene.dynamics);
+  FrameOptions options;
+  options.solver.threads = threads;
+  FrameStream stream = sceneFrameStream(scene, mesh, options);
   int mostIterations = 0;
   double slowestIteration = 0;
   while (!stream.done()) {
@@ -128,11 +129,11 @@ nlohmann::json animationTable(const std::string& name, const Scene& scene, const
                          {"max_iterations_per_frame", mostIterations},
                          {"max_iteration_ms", slowestIteration},
                          {"epsilon", scene.dynamics.epsilon},
-                         {"tau", scene.solver.tau},
-                         {"lambda", scene.solver.lambda},
-                         {"alpha", scene.solver.alpha},
+                         {"tau", scene.interpolation.cohesive.tau},
+                         {"lambda", scene.interpolation.cohesive.lambda},
+                         {"alpha", scene.interpolation.cohesive.alpha},
                          {"mu", scene.dynamics.mu},
-                         {"non_overlap", scene.solver.nonOverlap},
+                         {"non_overlap", scene.interpolation.nonOverlap},
                          {"uniform_material", scene.stiffness.empty()},
                          {"animation_curve", animationCurve(scene.timeline)},
                          {"paper", nullptr},

@@ -63,7 +63,7 @@ Timeline straightPaths(const Timeline& timeline, Interpolator& solver, bool even
 
 nlohmann::json measure(const std::string& name, const Scene& scene, const Multimesh& mesh, ShapeMetric metric, int steps,
                        bool even, int threads) {
-  InterpolationParams params = interpolationParams(scene.solver);
+  InterpolationParams params = scene.interpolation;
   params.metric = metric;
   SolverOptions options;
   options.threads = threads;

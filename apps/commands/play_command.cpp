@@ -2,6 +2,7 @@
 
 #include "cli.h"
 #include "commands/render_options.h"
+#include "commands/scene_overrides.h"
 #include "core/error.h"
 #include "gpu/vulkan_check.h"
 #include "playback/scene_parameters.h"
@@ -31,8 +32,8 @@ constexpr const char* kUsage =
     "                      solved before it is drawn, so the picture is the same on every run\n"
     "  --screenshot PATH   scripted: write the last frame's window, UI included, as PNG\n"
     "  --save              scripted: then write the parameters into the scene, as Save parameters does\n"
-    "  --set NAME=VALUE    a parameter's starting value (repeatable): tau, alpha, lambda, kappa_scale,\n"
-    "                      non_overlap, dynamics, epsilon, mu, gravity_x, gravity_y, wind_x, wind_y, anchor\n"
+    "  --set NAME=VALUE    a control's starting value (repeatable): any live parameter of `inbetween\n"
+    "                      parameters` (the solver's, the dynamics', kappa_scale, dynamics), e.g. tau=1e-9\n"
     "  --weights K=W,...   weights mode at these weights (K a key's name or index; others 0; normalized)\n"
     "  --size WxH          window size in pixels (default 1280x720)\n"
     "  --samples N         multisample anti-aliasing samples (default 2)\n"
@@ -43,27 +44,6 @@ constexpr const char* kUsage =
     "  --validation        run with the Khronos validation layer; any message is an error\n"
     "  --threads N         the most solver threads, 0 = all cores (default); fewer run while the window's\n"
     "                      drawing or other programs keep cores busy\n";
-
-// The --set assignments (repeatable, so taken out before the parser, which keeps one value per
-// option) and the other words.
-struct SplitArguments {
-  std::vector<std::string> sets, rest;
-};
-
-SplitArguments splitSets(const std::vector<std::string>& args) {
-  SplitArguments out;
-  for (size_t i = 0; i < args.size(); ++i) {
-    if (args[i].rfind("--set=", 0) == 0) {
-      out.sets.push_back(args[i].substr(6));
-    } else if (args[i] == "--set") {
-      if (i + 1 >= args.size()) throw InputError("play: option --set needs NAME=VALUE");
-      out.sets.push_back(args[++i]);
-    } else {
-      out.rest.push_back(args[i]);
-    }
-  }
-  return out;
-}
 
 // "K=W,..." over the scene's keys: K a name or an index.
 Eigen::VectorXd parseWeights(const std::string& text, const std::vector<std::string>& keys) {
@@ -133,7 +113,7 @@ void runScripted(play::PlayerSession& session, play::PlayerWindow& window, int f
 
 int runPlay(const std::vector<std::string>& rawArgs) {
   if (cli::printHelpIfAsked(rawArgs, kUsage)) return 0;
-  const SplitArguments split = splitSets(rawArgs);
+  const cli::SplitSets split = cli::takeSets(rawArgs, "play");
   const cli::Arguments arguments("play", split.rest, {"frames", "screenshot", "weights", "size", "samples", "sampling", "device", "threads"},
                                  {"validation", "no-vsync", "save"});
   if (arguments.positional().size() != 1) throw InputError("play: needs exactly one SCENE file (see `inbetween play --help`)");

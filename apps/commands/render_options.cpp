@@ -2,7 +2,6 @@
 
 #include "core/error.h"
 #include "gpu/vulkan_check.h"
-#include "pipeline/artwork_sampling.h"
 
 #include <algorithm>
 #include <cctype>
@@ -58,25 +57,17 @@ std::optional<render::Sampling> parseSampling(const cli::Arguments& a, const std
   throw InputError(option + ": '" + sampling + "' is not linear or nearest");
 }
 
-render::Sampling sceneSampling(const std::optional<render::Sampling>& option, const Scene& scene,
-                               const std::vector<RgbaImage>& drawings) {
-  if (option) return *option;
-  return nearestSampling(scene, drawings) ? render::Sampling::kNearest : render::Sampling::kLinear;
-}
-
 RenderOptions parseRenderOptions(const cli::Arguments& a) {
   RenderOptions o;
   if (!a.has("output")) throw InputError("render: needs -o DIR, the folder for the frames");
   o.output = a.value("output", "");
   if (a.has("frames")) o.frames = cli::frameRange(a.value("frames", ""), "--frames");
   if (a.has("size")) o.size = parseSize(a.value("size", ""), "--size");
-  if (a.has("fps")) o.fps = cli::positiveNumber(a.value("fps", ""), "--fps", 1000, "a frame rate");
   o.target.samples = a.integer("samples", 4, 1, 64);
   o.target.background = parseBackground(a.value("background", "transparent"), "--background");
   o.overlays.wireframe = a.flag("wireframe");
   o.overlays.cohesive = a.flag("cohesive");
   o.overlays.features = a.flag("features");
-  o.sampling = parseSampling(a);
   o.onion = a.integer("onion", 0, 0, render::kMaxOnionSkins / 2);
   o.sheetEvery = a.integer("sheet-every", 0, 0, 100000);
   if (a.has("sheet-frames")) {

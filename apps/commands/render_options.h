@@ -19,11 +19,8 @@ struct RenderOptions {
   std::string output;                  // -o DIR: folder for the frames (created if missing)
   std::optional<std::array<int, 2>> frames;  // --frames A:B, inclusive; default every frame
   std::optional<std::array<int, 2>> size;    // --size WxH; default the drawings' canvas
-  std::optional<double> fps;           // --fps N; default the scene's timeline's
   render::OffscreenOptions target;     // --samples, --background (size filled in later)
   render::Overlays overlays;           // --wireframe, --cohesive, --features
-  // --sampling linear|nearest; default none: the scene's "sampling" (sceneSampling)
-  std::optional<render::Sampling> sampling;
   int onion = 0;                       // --onion N: neighbouring frames each side, 0..2
   int sheetEvery = 0;                  // --sheet-every K: every k-th frame on the sheet; 0 = at most 36 tiles
   std::vector<int> sheetFrames;        // --sheet-frames LIST: just these frames on the sheet, ascending; empty = by sheetEvery
@@ -44,11 +41,6 @@ vk::VulkanContext openVulkan(const vk::ContextOptions& options, const std::strin
 
 // --sampling linear|nearest when given; `option` names it in errors.
 std::optional<render::Sampling> parseSampling(const cli::Arguments& arguments, const std::string& option = "--sampling");
-// The drawings' filtering: the command line's when given, else the scene's "sampling"
-// (pipeline/artwork_sampling.h; auto = nearest for pixel art). `drawings` as readKeyDrawings.
-render::Sampling sceneSampling(const std::optional<render::Sampling>& option, const Scene& scene,
-                               const std::vector<RgbaImage>& drawings);
-
 // "WxH" with both in [1, 16384]; `option` names it in errors.
 std::array<int, 2> parseSize(const std::string& text, const std::string& option);
 // "transparent" or a colour "RRGGBB" / "#RRGGBB" / "RRGGBBAA": straight RGBA in [0, 1].

@@ -90,6 +90,7 @@ GltfExportReport writeGltf(const BakedAnimation& baked, const render::RenderMesh
   report.targets = static_cast<int>(reduction.kept.size()) - 1;
   report.layers = static_cast<int>(doc.model.meshes.front().primitives.size());
   report.maxError = reduction.maxError;
+  report.shapeSize = baked.shapeSize;
   if (quantize || options.maxError > 0) {
     const PositionCodec raw(scene.canvas, options.pixelsPerUnit, false, baked.positions.front(), baked.positions);
     std::vector<int> every(n);

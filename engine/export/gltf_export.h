@@ -39,6 +39,7 @@ struct GltfExportReport {
   size_t bytesRaw = 0;     // the same animation with every frame, 32-bit floats, uncompressed
   double maxError = 0;     // drawing pixels: largest distance of a decoded vertex from the baked
                            // one, over every frame time (float rounding, quantization, dropping)
+  double shapeSize = 1;    // drawing pixels: s = sqrt(mean key area), the unit of the solver's lengths
 };
 
 // What the exported file is made of, besides the baked frames.

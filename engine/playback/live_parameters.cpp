@@ -1,11 +1,10 @@
 #include "playback/live_parameters.h"
 
 #include "core/error.h"
+#include "scene/scene_document.h"
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 
 namespace ib::play {
 
@@ -14,139 +13,136 @@ namespace {
 // The epsilon the dynamics toggle turns on with when the scene has no dynamics: half the
 // compliance range, visible secondary motion without the largest swings.
 constexpr double kDefaultEpsilon = 0.5;
+// The lower end of a log slider whose range is open at 0 (tau, anchor): far below any value the
+// bundled scenes use (tau down to 1e-9); typed entry takes smaller ones.
+constexpr double kLogFloor = 1e-12;
 
-std::string number(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", value);
-  return text;
-}
-
-Parameter slider(const std::string& name, double initial, double min, double max, bool logScale,
-                 const std::string& help) {
-  Parameter p;
-  p.name = name;
-  p.value = p.initial = initial;
-  p.min = std::min(min, initial);
-  p.max = std::max(max, initial);
-  p.logScale = logScale && p.min > 0;
-  p.help = help;
-  return p;
-}
-
-Parameter toggle(const std::string& name, bool initial, const std::string& help) {
-  Parameter p = slider(name, initial ? 1 : 0, 0, 1, false, help);
-  p.toggle = true;
-  return p;
-}
-
-std::string rangeText(const Parameter& p) {
-  return p.toggle ? "0 (off) or 1 (on)" : "[" + number(p.min) + ", " + number(p.max) + "]";
+Control control(const ParameterSpec& spec, double initial) {
+  Control c;
+  c.spec = &spec;
+  c.value = c.initial = initial;
+  double lo = spec.min, hi = spec.max;
+  if (spec.logScale && spec.min > 0) {
+    c.scale.kind = SliderScale::Kind::kLog;
+  } else if (spec.logScale && spec.minOpen) {
+    c.scale.kind = SliderScale::Kind::kLog;
+    lo = kLogFloor;
+  } else if (spec.logScale) {
+    c.scale.kind = SliderScale::Kind::kSymmetricLog;
+    c.scale.c = spec.defaultValue != 0 ? 1e-3 * std::abs(spec.defaultValue) : 1e-3;
+  } else if (spec.minOpen) {
+    lo = spec.min + 1e-3 * (spec.max - spec.min);
+  }
+  if (c.scale.kind != SliderScale::Kind::kLog || initial > 0) lo = std::min(lo, initial);
+  hi = std::max(hi, initial);
+  c.sliderMin = c.scale.toSlider(lo);
+  c.sliderMax = c.scale.toSlider(hi);
+  return c;
 }
 
 }  // namespace
 
-LiveParameters::LiveParameters(const Scene& scene) : sceneDynamics_(scene.dynamics) {
-  const SceneSolverParams& s = scene.solver;
-  const DynamicsParams& d = scene.dynamics;
-  parameters_ = {
-      slider("tau", s.tau, 1e-6, 1, true, "cohesive threshold: a glued pair lets go above it (normalized energy)"),
-      slider("alpha", s.alpha, 0, 1, false, "cohesive pairs resist stretch (1) versus shear (0)"),
-      slider("lambda", s.lambda, 1, 1e6, true, "cohesive stiffness: how hard glued cuts hold shut (per normalized length)"),
-      slider("kappa_scale", 1, 0.01, 100, true, "multiplies every triangle's stiffness kappa against the cohesive pull"),
-      toggle("non_overlap", s.nonOverlap, "keep the shape from overlapping itself (W_O)"),
-      toggle("dynamics", d.enabled(), "secondary motion: follow-through, gravity, wind"),
-      slider("epsilon", d.enabled() ? d.epsilon : kDefaultEpsilon, 0, 1, false,
-             "compliance: 0 follows the keys exactly, 1 allows the most secondary motion"),
-      slider("mu", d.mu, 0, 10, false, "damping of the secondary motion, 1/s"),
-      slider("gravity_x", d.gravity.x(), -10, 10, false, "gravity, x (right), shape sizes per s^2"),
-      slider("gravity_y", d.gravity.y(), -10, 10, false, "gravity, y (down), shape sizes per s^2"),
-      slider("wind_x", d.wind.x(), -10, 10, false, "wind, x (right), shape sizes per s^2"),
-      slider("wind_y", d.wind.y(), -10, 10, false, "wind, y (down), shape sizes per s^2"),
-      slider("anchor", d.anchor, 1e-3, 10, true, "how strongly the shape keeps to the animation, relative to its stiffness"),
-  };
+double SliderScale::toSlider(double value) const {
+  switch (kind) {
+    case Kind::kLog: return std::log10(value);
+    case Kind::kSymmetricLog: return std::copysign(std::log10(1 + std::abs(value) / c), value);
+    case Kind::kLinear: break;
+  }
+  return value;
 }
 
-const std::vector<Parameter>& LiveParameters::all() const { return parameters_; }
-
-const Parameter& LiveParameters::find(const std::string& name) const {
-  for (const Parameter& p : parameters_)
-    if (p.name == name) return p;
-  std::string names;
-  for (const Parameter& p : parameters_) names += (names.empty() ? "" : ", ") + p.name;
-  throw InputError("unknown parameter " + inQuotes(name) + " (one of " + names + ")");
+double SliderScale::fromSlider(double s) const {
+  switch (kind) {
+    case Kind::kLog: return std::pow(10.0, s);
+    case Kind::kSymmetricLog: return std::copysign(c * (std::pow(10.0, std::abs(s)) - 1), s);
+    case Kind::kLinear: break;
+  }
+  return s;
 }
 
-Parameter& LiveParameters::find(const std::string& name) {
-  return const_cast<Parameter&>(static_cast<const LiveParameters&>(*this).find(name));
+LiveParameters::LiveParameters(const Scene& scene) {
+  for (const ParameterSpec& spec : parameterTable()) {
+    if (!spec.live) continue;
+    double initial = spec.get ? spec.get(scene) : spec.defaultValue;
+    if (spec.name == "dynamics") initial = scene.dynamics.enabled() ? 1 : 0;
+    if (spec.name == "epsilon" && !scene.dynamics.enabled()) initial = kDefaultEpsilon;
+    controls_.push_back(control(spec, initial));
+  }
+}
+
+const std::vector<Control>& LiveParameters::all() const { return controls_; }
+
+const Control& LiveParameters::find(const std::string& name) const {
+  for (const Control& c : controls_)
+    if (c.spec->name == name || (!c.spec->field.empty() && findParameter(name) == c.spec)) return c;
+  const ParameterSpec& spec = parameter(name);  // unknown: "did you mean"
+  throw InputError(inQuotes(spec.name) + " is not a control of the player: it " +
+                   (spec.invalidates == Invalidates::kMultimesh ? "changes the multimesh" : "is not live") +
+                   "; set it in the scene file (" + spec.field + ") or with `inbetween render --set`");
+}
+
+Control& LiveParameters::find(const std::string& name) {
+  return const_cast<Control&>(static_cast<const LiveParameters&>(*this).find(name));
 }
 
 void LiveParameters::set(const std::string& name, double value) {
-  Parameter& p = find(name);
-  const bool inRange = p.toggle ? (value == 0 || value == 1) : (value >= p.min && value <= p.max);
-  if (!std::isfinite(value) || !inRange)
-    throw InputError("parameter " + inQuotes(name) + ": " + number(value) + " is out of range " + rangeText(p));
-  if (p.value == value) return;
-  p.value = value;
+  Control& c = find(name);
+  checkParameterValue(*c.spec, value, "parameter " + inQuotes(c.spec->name));
+  if (c.value == value) return;
+  c.value = value;
   ++generation_;
 }
 
 double LiveParameters::get(const std::string& name) const { return find(name).value; }
 
 void LiveParameters::reset(const std::string& name) {
-  Parameter& p = find(name);
-  if (p.value == p.initial) return;
-  p.value = p.initial;
+  Control& c = find(name);
+  if (c.value == c.initial) return;
+  c.value = c.initial;
   ++generation_;
 }
 
 void LiveParameters::resetAll() {
-  for (const Parameter& p : parameters_) reset(p.name);
+  for (const Control& c : controls_) reset(c.spec->name);
 }
 
-InterpolationParams LiveParameters::interpolation() const {
-  InterpolationParams out;
-  out.cohesive.tau = get("tau");
-  out.cohesive.alpha = get("alpha");
-  out.cohesive.lambda = get("lambda");
-  out.nonOverlap = get("non_overlap") != 0;
-  return out;
-}
-
-DynamicsParams LiveParameters::dynamics() const {
-  DynamicsParams out = sceneDynamics_;
-  out.epsilon = get("dynamics") != 0 ? get("epsilon") : 0;
-  out.mu = get("mu");
-  out.gravity = {get("gravity_x"), get("gravity_y")};
-  out.wind = {get("wind_x"), get("wind_y")};
-  out.anchor = get("anchor");
-  return out;
-}
-
-double LiveParameters::kappaScale() const { return get("kappa_scale"); }
 int LiveParameters::generation() const { return generation_; }
 
 void LiveParameters::setFromText(const std::string& assignment) {
   const size_t equals = assignment.find('=');
-  if (equals == std::string::npos || equals == 0)
-    throw InputError("--set " + inQuotes(assignment) + ": expected NAME=VALUE, e.g. tau=1e-4");
-  const std::string name = assignment.substr(0, equals);
-  const std::string text = assignment.substr(equals + 1);
+  const std::string where = "--set " + inQuotes(assignment);
+  if (equals == std::string::npos || equals == 0) throw InputError(where + ": expected NAME=VALUE, e.g. tau=1e-4");
   try {
-    const Parameter& p = find(name);
-    double value = 0;
-    if (p.toggle && (text == "on" || text == "true")) {
-      value = 1;
-    } else if (p.toggle && (text == "off" || text == "false")) {
-      value = 0;
-    } else {
-      char* end = nullptr;
-      value = std::strtod(text.c_str(), &end);
-      if (text.empty() || end != text.c_str() + text.size()) throw InputError(inQuotes(text) + " is not a number");
-    }
-    set(name, value);
+    const Control& c = find(assignment.substr(0, equals));
+    set(c.spec->name, parseParameterText(*c.spec, assignment.substr(equals + 1), where));
   } catch (const InputError& error) {
-    throw InputError("--set " + inQuotes(assignment) + ": " + error.what());
+    const std::string message = error.what();
+    throw InputError(message.rfind(where, 0) == 0 ? message : where + ": " + message);
   }
+}
+
+Scene LiveParameters::scene(const Scene& base) const {
+  Scene out = base;
+  for (const Control& c : controls_)
+    if (c.spec->set) c.spec->set(out, c.value);
+  return out;
+}
+
+FrameOptions LiveParameters::frameOptions() const {
+  FrameOptions options;
+  options.kappaScale = get("kappa_scale");
+  options.dynamics = get("dynamics") != 0;
+  return options;
+}
+
+void LiveParameters::saveInto(SceneDocument& document) const {
+  const bool dynamics = get("dynamics") != 0;
+  for (const Control& c : controls_) {
+    if (c.spec->field.empty()) continue;
+    const double value = c.spec->name == "epsilon" && !dynamics ? 0.0 : c.value;
+    if (document.parameter(c.spec->name) != value) document.apply(edit::SetParameter{c.spec->name, value});
+  }
+  if (get("kappa_scale") != 1) document.apply(edit::ScaleStiffness{get("kappa_scale")});
 }
 
 }  // namespace ib::play

@@ -5,6 +5,7 @@
 #include "multimesh/multimesh.h"
 #include "multimesh/multimesh_io.h"
 #include "pipeline/key_drawings.h"
+#include "scene/parameters.h"
 
 #include <filesystem>
 #include <mutex>
@@ -61,18 +62,27 @@ std::vector<std::string> meshFiles(const Scene& scene) {
   return files;
 }
 
-// The scene file's fields that shape the multimesh, as canonical text: all but "timeline",
-// "dynamics" and the solver's cohesive and non-overlap fields (solver.kappa is painted into the
-// mesh). Two scenes with the same text, over unchanged drawings, have the same multimesh, so
-// saving tuned parameters reloads the scene without rebuilding it.
+// The scene file's fields that shape the multimesh, as canonical text: all but the timeline's
+// marks and the parameters whose change does not invalidate the multimesh (scene/parameters.h:
+// the solver's cohesive and non-overlap fields, the dynamics, sampling...; solver.kappa is painted
+// into the mesh). Two scenes with the same text, over unchanged drawings, have the same
+// multimesh, so saving tuned parameters reloads the scene without rebuilding it.
 std::string meshFields(const std::string& sceneText) {
   nlohmann::json j = nlohmann::json::parse(sceneText, nullptr, false);
   if (!j.is_object()) return sceneText;
   j.erase("timeline");
-  j.erase("dynamics");
-  if (j.contains("solver") && j["solver"].is_object())
-    for (const char* field : {"lambda", "tau", "alpha", "non_overlap"}) j["solver"].erase(field);
-  if (j.contains("solver") && j["solver"].empty()) j.erase("solver");  // saving may add it
+  for (const ParameterSpec& spec : parameterTable()) {
+    if (spec.field.empty() || spec.invalidates == Invalidates::kMultimesh) continue;
+    const size_t dot = spec.field.find('.');
+    if (dot == std::string::npos) {
+      j.erase(spec.field);
+      continue;
+    }
+    const std::string section = spec.field.substr(0, dot);
+    if (!j.contains(section) || !j[section].is_object()) continue;
+    j[section].erase(spec.field.substr(dot + 1));
+    if (j[section].empty()) j.erase(section);  // saving may add it
+  }
   return j.dump();  // keys sorted: the order in the file does not matter
 }
 

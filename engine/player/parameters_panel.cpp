@@ -1,5 +1,6 @@
-// The parameters: a slider (log-scaled where the parameter asks) or a toggle per live parameter,
-// each with its default and a reset; the solver's and the dynamics' in two groups. A change goes
+// The parameters: a slider (log-scaled where the table asks; Ctrl+click types any value the scene
+// file takes), a toggle or a choice per live parameter (scene/parameters.h), each with its default
+// and a reset; the solver's and the dynamics' in two groups. A change goes
 // to the solve worker in the session's next update.
 #include "player/player_ui.h"
 
@@ -8,74 +9,132 @@
 #include <imgui.h>
 
 #include <cstdio>
+#include <string>
 
 namespace ib::play {
 
 namespace {
 
-bool dynamicsParameter(const std::string& name) {
-  return name == "dynamics" || name == "epsilon" || name == "mu" || name == "gravity_x" || name == "gravity_y" ||
-         name == "wind_x" || name == "wind_y" || name == "anchor";
+bool dynamicsControl(const Control& c) { return c.spec->name == "dynamics" || c.spec->field.rfind("dynamics.", 0) == 0; }
+
+// The value as the table writes it, with its unit.
+std::string shown(const ParameterSpec& spec, double value) {
+  return formatParameterValue(spec, value) + (spec.unit.empty() ? "" : " " + spec.unit);
 }
 
-// One row: the slider (or checkbox) showing the value, and the default too once it has moved;
-// the name, in the accent colour when moved; a reset button.
-void parameterRow(PlayerSession& session, const Parameter& p) {
+// The popup that takes a typed value for `spec` (opened by the row): Enter sets it, as --set
+// reads text; a value it does not take goes to the messages.
+void typedEntry(PlayerSession& session, UiState& ui, const ParameterSpec& spec) {
+  if (!ImGui::BeginPopup("type")) return;
+  if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
+  ImGui::SetNextItemWidth(160);
+  if (ImGui::InputText("##typed", ui.typedValue.data(), ui.typedValue.size(),
+                       ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll)) {
+    try {
+      session.parameters().set(spec.name, parseParameterText(spec, ui.typedValue.data(), "parameter " + inQuotes(spec.name)));
+    } catch (const InputError& e) {
+      session.messages().push_back({e.what(), true});
+    }
+    ImGui::CloseCurrentPopup();
+  }
+  ImGui::TextDisabled("%s: Enter sets it; accepts %s", spec.name.c_str(), formatParameterRange(spec).c_str());
+  ImGui::EndPopup();
+}
+
+// One row: the slider (checkbox, or choice) showing the value, and the default too once it has
+// moved; the name, in the accent colour when moved; a reset button.
+void parameterRow(PlayerSession& session, UiState& ui, const Control& c) {
   LiveParameters& params = session.parameters();
-  ImGui::PushID(p.name.c_str());
+  const ParameterSpec& spec = *c.spec;
+  ImGui::PushID(spec.name.c_str());
   const float resetWidth = 22;
-  const bool moved = p.value != p.initial;
-  char format[64];
-  std::snprintf(format, sizeof format, moved ? "%%.4g  (default %.4g)" : "%%.4g", p.initial);
+  const bool moved = c.value != c.initial;
   bool changed = false;
-  double value = p.value;
-  if (p.toggle) {
-    bool on = p.value != 0;
+  double value = c.value;
+  if (spec.kind == ParameterKind::kToggle) {
+    bool on = c.value != 0;
     changed = ImGui::Checkbox("##on", &on);
     value = on ? 1 : 0;
     if (moved) {
       ImGui::SameLine();
-      ImGui::TextDisabled("default %s", p.initial != 0 ? "on" : "off");
+      ImGui::TextDisabled("default %s", formatParameterValue(spec, c.initial).c_str());
+    }
+  } else if (spec.kind == ParameterKind::kChoice) {
+    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - 100 - resetWidth);
+    if (ImGui::BeginCombo("##choice", formatParameterValue(spec, c.value).c_str())) {
+      for (size_t i = 0; i < spec.choices.size(); ++i) {
+        const bool selected = static_cast<size_t>(c.value) == i;
+        if (ImGui::Selectable(spec.choices[i].word.c_str(), selected)) {
+          value = double(i);
+          changed = true;
+        }
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", spec.choices[i].meaning.c_str());
+      }
+      ImGui::EndCombo();
     }
   } else {
+    // The slider moves in the control's scale (live_parameters.h) and shows the value itself;
+    // double-click or Ctrl+click types any value the parameter takes.
+    std::string text = formatParameterValue(spec, c.value);
+    if (moved) text += "  (default " + formatParameterValue(spec, c.initial) + ")";
+    std::string format;
+    for (const char ch : text) format += ch == '%' ? std::string("%%") : std::string(1, ch);
+    double s = c.scale.toSlider(c.value);
     ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - 100 - resetWidth);
-    const ImGuiSliderFlags flags = p.logScale ? ImGuiSliderFlags_Logarithmic : ImGuiSliderFlags_None;
-    changed = ImGui::SliderScalar("##value", ImGuiDataType_Double, &value, &p.min, &p.max, format, flags);
+    changed = ImGui::SliderScalar("##value", ImGuiDataType_Double, &s, &c.sliderMin, &c.sliderMax, format.c_str(),
+                                  ImGuiSliderFlags_NoInput | ImGuiSliderFlags_NoRoundToFormat);
+    if (changed) value = c.scale.fromSlider(s);
+    if (ImGui::IsItemHovered() && (ImGui::IsMouseDoubleClicked(0) || (ImGui::GetIO().KeyCtrl && ImGui::IsMouseClicked(0)))) {
+      std::snprintf(ui.typedValue.data(), ui.typedValue.size(), "%s", formatParameterValue(spec, c.value).c_str());
+      ImGui::OpenPopup("type");
+    }
+    typedEntry(session, ui, spec);
   }
-  if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("%s\ndefault (the scene's) %g, range %g..%g%s\nCtrl+click to type a value", p.help.c_str(), p.initial,
-                      p.min, p.max, p.logScale ? ", log scale" : "");
   if (changed) {
     try {
-      params.set(p.name, value);
+      params.set(spec.name, value);
     } catch (const InputError& e) {
       session.messages().push_back({e.what(), true});
     }
   }
   ImGui::SameLine(ImGui::GetWindowContentRegionMax().x - 94 - resetWidth);
-  if (moved) ImGui::TextColored(ImVec4(0.96f, 0.70f, 0.35f, 1), "%s", p.name.c_str());
-  else ImGui::TextUnformatted(p.name.c_str());
+  if (moved) ImGui::TextColored(ImVec4(0.96f, 0.70f, 0.35f, 1), "%s", spec.name.c_str());
+  else ImGui::TextUnformatted(spec.name.c_str());
   ImGui::SameLine(ImGui::GetWindowContentRegionMax().x - resetWidth);
   if (!moved) ImGui::BeginDisabled();
-  if (ImGui::SmallButton("R")) params.reset(p.name);
+  if (ImGui::SmallButton("R")) params.reset(spec.name);
   if (!moved) ImGui::EndDisabled();
-  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) ImGui::SetTooltip("Reset to the scene's %g", p.initial);
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+    ImGui::SetTooltip("Reset to the scene's %s", shown(spec, c.initial).c_str());
   ImGui::PopID();
 }
 
 }  // namespace
 
-void parametersPanel(PlayerSession& session) {
+void parametersPanel(PlayerSession& session, UiState& ui) {
   LiveParameters& params = session.parameters();
   // A copy: a row's change rewrites the list's values while it is walked.
-  const std::vector<Parameter> all = params.all();
+  const std::vector<Control> all = params.all();
   ImGui::TextDisabled("Solver");
-  for (const Parameter& p : all)
-    if (!dynamicsParameter(p.name)) parameterRow(session, p);
+  for (const Control& c : all)
+    if (!dynamicsControl(c)) parameterRow(session, ui, c);
   ImGui::Spacing();
   ImGui::TextDisabled("Dynamics");
-  for (const Parameter& p : all)
-    if (dynamicsParameter(p.name)) parameterRow(session, p);
+  // The toggle first, then what shapes the motion; the gusts and the controller's budget folded
+  // away until asked for.
+  const auto folded = [](const Control& c) {
+    return c.spec->name == "gust" || c.spec->name == "gust_frequency" || c.spec->name == "settle" ||
+           c.spec->name == "max_deviation";
+  };
+  for (const Control& c : all)
+    if (c.spec->name == "dynamics") parameterRow(session, ui, c);
+  for (const Control& c : all)
+    if (dynamicsControl(c) && c.spec->name != "dynamics" && !folded(c)) parameterRow(session, ui, c);
+  if (ImGui::TreeNode("gusts, settling, deviation budget")) {
+    for (const Control& c : all)
+      if (folded(c)) parameterRow(session, ui, c);
+    ImGui::TreePop();
+  }
   ImGui::Spacing();
   ImGui::Separator();
   if (ImGui::Button("Reset all")) params.resetAll();

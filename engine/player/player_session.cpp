@@ -37,8 +37,8 @@ void PlayerSession::rebuild(bool keepParameters) {
   const LoadedScene& loaded = scene();
   std::map<std::string, double> tuned;  // what the user moved away from the old scene's values
   if (keepParameters && parameters_)
-    for (const Parameter& p : parameters_->all())
-      if (p.value != p.initial) tuned[p.name] = p.value;
+    for (const Control& c : parameters_->all())
+      if (c.value != c.initial) tuned[c.spec->name] = c.value;
   if (!hasInitialMap()) initialMap_ = false;
   const std::shared_ptr<const Multimesh> played = initialMap_ ? loaded.initial : loaded.mesh;
   previousMesh_ = std::move(renderMesh_);
@@ -66,16 +66,16 @@ void PlayerSession::rebuild(bool keepParameters) {
     weights_[0] = 1;
   }
   worker_.reset();  // its thread stops before the new one starts: the cores are the new one's
-  worker_ = std::make_unique<SolveWorker>(played, timeline, parameters_->interpolation(), parameters_->dynamics(),
-                                          played->stiffnesses() * parameters_->kappaScale(), options_);
+  const SceneFrameSetup setup = sceneFrameSetup(parameters_->scene(loaded.scene), *played, parameters_->frameOptions());
+  worker_ = std::make_unique<SolveWorker>(played, setup.timeline, setup.interpolation, setup.dynamics, setup.stiffness, options_);
   sentGeneration_ = parameters_->generation();
   requestedFrame_ = -1;
   if (weightsMode_) worker_->showWeights(weights_);
 }
 
 void PlayerSession::sendParameters() {
-  worker_->setParameters(parameters_->interpolation(), parameters_->dynamics(),
-                         playedMesh().stiffnesses() * parameters_->kappaScale());
+  const SceneFrameSetup setup = sceneFrameSetup(parameters_->scene(scene().scene), playedMesh(), parameters_->frameOptions());
+  worker_->setParameters(setup.interpolation, setup.dynamics, setup.stiffness);
   sentGeneration_ = parameters_->generation();
   requestedFrame_ = -1;  // re-solve what is shown
   if (weightsMode_) worker_->showWeights(weights_);

@@ -7,6 +7,7 @@
 #include "player/view_navigation.h"
 #include "renderers/window_presenter.h"
 
+#include <array>
 #include <deque>
 #include <string>
 
@@ -40,6 +41,7 @@ struct UiState {
   bool closeRequested = false;  // Esc: the window closes
   std::string screenshotPath;  // where F12 writes; empty: inbetween-NNNN.png in the current folder
   int screenshots = 0;
+  std::array<char, 64> typedValue{};  // a parameter's value being typed (the parameters panel's popup)
 };
 
 // The layout: a side panel on the right, the transport bar along the bottom.
@@ -49,7 +51,7 @@ PixelRect canvasRect(int width, int height);
 
 void transportPanel(PlayerSession& session, UiState& ui);    // transport_panel.cpp: bottom bar, scrubber
 void weightsPanel(PlayerSession& session);                   // weights_panel.cpp: sliders, triangle pad
-void parametersPanel(PlayerSession& session);                // parameters_panel.cpp: a slider per parameter
+void parametersPanel(PlayerSession& session, UiState& ui);   // parameters_panel.cpp: a control per live parameter
 void viewPanel(PlayerSession& session, UiState& ui);         // view_panel.cpp: overlays, onion, backdrop, zoom
 void readoutsPanel(PlayerSession& session, const UiState& ui);  // readouts_panel.cpp: fps, solve, graph
 void filesPanel(PlayerSession& session, UiState& ui);        // files_panel.cpp: scene, reload, save, messages

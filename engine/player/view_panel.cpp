@@ -83,7 +83,7 @@ void sidePanel(PlayerSession& session, UiState& ui) {
   ui.weightsModeShown = session.weightsMode();
   if (ImGui::BeginTabBar("tabs")) {
     if (ImGui::BeginTabItem("Parameters")) {
-      parametersPanel(session);
+      parametersPanel(session, ui);
       ImGui::EndTabItem();
     }
     if (ImGui::BeginTabItem("Weights", nullptr, showWeights ? ImGuiTabItemFlags_SetSelected : 0)) {

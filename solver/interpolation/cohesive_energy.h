@@ -10,7 +10,7 @@
 // no force.
 #pragma once
 
-#include "interpolation/cohesive_params.h"
+#include "interpolation/interpolation_params.h"
 #include "interpolation/deformation_energy.h"
 #include "multimesh/multimesh.h"
 

@@ -31,8 +31,7 @@
 // the multimesh's own units.
 #pragma once
 
-#include "interpolation/cohesive_params.h"
-#include "interpolation/shape_metric.h"
+#include "interpolation/interpolation_params.h"
 #include "multimesh/multimesh.h"
 
 #include <Eigen/Core>
@@ -41,15 +40,6 @@
 #include <vector>
 
 namespace ib {
-
-struct InterpolationParams {
-  CohesiveParams cohesive;  // lambda, tau, alpha (normalized units)
-  bool nonOverlap = false;  // enforce W_O (eq. 14); off by default, as in the paper
-  // How each triangle's keys are averaged (shape_metric.h): kShared, one metric per triangle
-  // blended by the weights (no shrinking or snapping under stretch; a departure from the paper),
-  // or kPerKey, the paper's eq. 9. Default kShared (docs/solver.md, "Departures from the paper").
-  ShapeMetric metric = ShapeMetric::kShared;
-};
 
 struct SolverOptions {
   double relativeTolerance = 1e-3;  // stop when |g|_inf / |g(x_start)|_inf < this (paper 7.1)

@@ -210,7 +210,7 @@ Attempt mapKeys(const Scene& scene, const SharedBoundary& boundary, const Refere
                           smallestTriangleArea(mesh.triangles, positions[k]).first});
     out.multimesh->addKey(positions[k], std::move(pairs), outlineVertices(boundary, mesh, k));
   }
-  paintStiffness(*out.multimesh, scene.stiffness, scene.solver.kappa);
+  paintStiffness(*out.multimesh, scene.stiffness, scene.kappa);
   return out;
 }
 

@@ -3,6 +3,7 @@
 #include "core/plane_geometry.h"
 #include "core/png_image.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -28,6 +29,16 @@ std::array<Eigen::Vector2d, 4> samplePoints(const Eigen::MatrixX2d& X, const Tri
   return {centroid, 0.5 * (centroid + a), 0.5 * (centroid + b), 0.5 * (centroid + c)};
 }
 
+// Distance from p to the open polyline (to its point when it has one), px.
+double distanceToPolyline(const Polyline& points, const Eigen::Vector2d& p) {
+  double nearest = (points.front() - p).norm();
+  for (size_t i = 1; i < points.size(); ++i) {
+    const double u = closestParameter(points[i - 1], points[i], p);
+    nearest = std::min(nearest, (points[i - 1] + u * (points[i] - points[i - 1]) - p).norm());
+  }
+  return nearest;
+}
+
 }  // namespace
 
 void paintStiffness(Multimesh& mesh, const StiffnessPaint& paint, double base) {
@@ -51,6 +62,12 @@ void paintStiffness(Multimesh& mesh, const StiffnessPaint& paint, double base) {
       const Eigen::Vector2d centroid = samplePoints(X, triangles[t])[0];
       if (rayCrossings(region.polygon, centroid) % 2 == 1) mesh.setStiffness(t, region.kappa);
     }
+  }
+  for (const StiffnessStroke& stroke : paint.strokes) {
+    const Eigen::MatrixX2d X = mesh.keyPositions(stroke.key);
+    for (int t = 0; t < count; ++t)
+      if (distanceToPolyline(stroke.points, samplePoints(X, triangles[t])[0]) <= stroke.radius)
+        mesh.setStiffness(t, stroke.kappa);
   }
 }
 

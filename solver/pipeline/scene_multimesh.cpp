@@ -163,7 +163,7 @@ SceneMultimesh build(const Scene& scene, const SceneMultimeshOptions& options, M
   auto report = std::make_shared<ComeshReport>();
   Multimesh optimized = comeshOptimize(*out.initial, &built.boundary, comeshOptions, report.get());
   // Flips, splits and collapses made new triangles: paint them again from the scene.
-  paintStiffness(optimized, scene.stiffness, scene.solver.kappa);
+  paintStiffness(optimized, scene.stiffness, scene.kappa);
   try {
     optimized.validate();
   } catch (const InputError& e) {  // the input was fine: a broken result is our fault (exit 1)

@@ -3,7 +3,7 @@
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/json_fields.h"
-#include "interpolation/interpolator.h"
+#include "scene/parameter_json.h"
 #include "scene/scene_animation.h"
 
 #include <algorithm>
@@ -95,47 +95,6 @@ KeySpec parseKey(const json& j, const Context& scene, const std::filesystem::pat
       key.holes.push_back(point(j["holes"][i], at.in("holes").in("point " + std::to_string(i + 1))));
   }
   return key;
-}
-
-void parseTracing(const json& j, const Context& at, TracingOptions& t) {
-  requireObject(j, at, {"tolerance", "min_area", "alpha_threshold", "background", "color_threshold", "holes"});
-  if (j.contains("holes")) {
-    const std::string holes = text(j, "holes", at);
-    if (holes == "marked") t.holes = PaperHoles::kMarked;
-    else if (holes == "enclosed-paper") t.holes = PaperHoles::kEnclosedPaper;
-    else throw at.in("holes").error(inQuotes(holes) + " is not \"marked\" (enclosed paper is shape unless a key's "
-                                    "\"holes\" marks it) or \"enclosed-paper\" (every enclosed paper region is a hole)");
-  }
-  t.tolerance = number(j, "tolerance", t.tolerance, at, 0, 10, true);
-  t.minArea = number(j, "min_area", t.minArea, at, 0, 1e9);
-  t.alphaThreshold = static_cast<int>(number(j, "alpha_threshold", t.alphaThreshold, at, 1, 255));
-  t.colorThreshold = number(j, "color_threshold", t.colorThreshold, at, 0, 442, true);
-  if (j.contains("background")) {
-    const json& b = j["background"];
-    if (!b.is_array() || b.size() != 3) throw at.in("background").error("must be [r, g, b], each 0..255");
-    std::array<int, 3> rgb{};
-    for (int c = 0; c < 3; ++c) {
-      if (!b[c].is_number_integer() || b[c].get<int>() < 0 || b[c].get<int>() > 255)
-        throw at.in("background").error("must be [r, g, b], each 0..255");
-      rgb[c] = b[c].get<int>();
-    }
-    t.background = rgb;
-  }
-}
-
-void parseSolver(const json& j, const Context& at, SceneSolverParams& s) {
-  requireObject(j, at, {"lambda", "tau", "alpha", "kappa", "non_overlap", "metric"});
-  s.lambda = number(j, "lambda", s.lambda, at, 0, 1e12);
-  s.tau = number(j, "tau", s.tau, at, 0, 1e6, true);
-  s.alpha = number(j, "alpha", s.alpha, at, 0, 1);
-  s.kappa = number(j, "kappa", s.kappa, at, 0, 1e6, true);
-  s.nonOverlap = boolean(j, "non_overlap", s.nonOverlap, at);
-  if (j.contains("metric")) {
-    const std::string metric = text(j, "metric", at);
-    if (metric == "shared") s.metric = ShapeMetric::kShared;
-    else if (metric == "per_key") s.metric = ShapeMetric::kPerKey;
-    else throw at.in("metric").error("\"" + metric + "\" is not \"shared\" (one metric per triangle, no shrinking) or \"per_key\" (the paper's eq. 9)");
-  }
 }
 
 // A plain feature named with a '.', which is reserved for the features cuts create: what the cut
@@ -271,9 +230,11 @@ Scene parseScene(const std::string& source, const std::string& path) {
   } catch (const json::out_of_range& e) {  // a number past the doubles (1e999)
     throw at.error(std::string("malformed JSON: a number too large for a double: ") + e.what());
   }
-  requireObject(j, at,
-                {"version", "reference", "edge_length", "max_vertices", "corners", "sampling", "tracing", "solver", "keys", "timeline",
-                 "dynamics", "stiffness"});
+  std::set<std::string> allowed = parameterFields("");
+  allowed.insert({"version", "reference", "keys", "tracing", "solver", "timeline", "dynamics", "stiffness"});
+  requireObject(j, at, allowed);
+  for (const char* section : {"tracing", "solver", "dynamics"})
+    if (j.contains(section)) requireObject(j[section], at.in(section), parameterFields(section));
   if (!j.contains("version") || !j["version"].is_number_integer() || j["version"].get<int>() != 1)
     throw at.in("version").error("must be 1 (the only scene format version so far)");
   Scene scene;
@@ -290,34 +251,13 @@ Scene parseScene(const std::string& source, const std::string& path) {
     scene.reference = j["reference"].is_string() ? scene.keyIndex(j["reference"].get<std::string>()) : -1;
     if (scene.reference < 0) throw at.in("reference").error("must name one of the keys");
   }
-  if (j.contains("edge_length")) scene.edgeLength = number(j, "edge_length", scene.edgeLength, at, 0.5, 1e6);
-  scene.maxVertices = static_cast<int>(number(j, "max_vertices", scene.maxVertices, at, 100, 1e9));
-  if (j.contains("corners")) {
-    const std::string corners = text(j, "corners", at);
-    if (corners == "paired") scene.corners = CornerHandling::kPaired;
-    else if (corners == "vertices") scene.corners = CornerHandling::kVertices;
-    else if (corners == "off") scene.corners = CornerHandling::kOff;
-    else throw at.in("corners").error(inQuotes(corners) + " is not \"paired\" (a vertex at every outline corner; corners "
-                                      "that correspond pair up like features), \"vertices\" (a vertex at every corner, "
-                                      "no pairing) or \"off\" (arc length between features only)");
-  }
-  if (j.contains("sampling")) {
-    const std::string sampling = text(j, "sampling", at);
-    if (sampling == "auto") scene.sampling = ArtworkSampling::kAuto;
-    else if (sampling == "linear") scene.sampling = ArtworkSampling::kLinear;
-    else if (sampling == "nearest") scene.sampling = ArtworkSampling::kNearest;
-    else throw at.in("sampling").error(inQuotes(sampling) + " is not \"linear\" (smooth, for drawn art), \"nearest\" (hard "
-                                       "pixel edges, for pixel art) or \"auto\" (nearest when every drawing is pixel art)");
-  }
-  if (j.contains("tracing")) parseTracing(j["tracing"], at.in("tracing"), scene.tracing);
-  if (j.contains("solver")) parseSolver(j["solver"], at.in("solver"), scene.solver);
+  readParameters(j, at, scene);
   checkCorrespondence(scene, at);
   checkInteriorFeatures(scene, at);
   shareInteriorRadii(scene, at);
   std::vector<std::string> names;
   for (const KeySpec& key : scene.keys) names.push_back(key.name);
-  scene.timeline = j.contains("timeline") ? parseTimeline(j["timeline"], names, at.file) : defaultTimeline(names);
-  if (j.contains("dynamics")) scene.dynamics = parseDynamics(j["dynamics"], at.in("dynamics"));
+  scene.timeline = parseTimeline(j.contains("timeline") ? &j["timeline"] : nullptr, names, scene.timelineSettings, at.file);
   if (j.contains("stiffness")) scene.stiffness = parseStiffness(j["stiffness"], at.in("stiffness"), names, folder.string());
   if (scene.keys.size() == 1)
     scene.notes.push_back(at.file + ": one key (" + inQuotes(scene.keys[0].name) +
@@ -325,22 +265,14 @@ Scene parseScene(const std::string& source, const std::string& path) {
   return scene;
 }
 
-InterpolationParams interpolationParams(const SceneSolverParams& solver) {
-  InterpolationParams p;
-  p.cohesive.lambda = solver.lambda;
-  p.cohesive.tau = solver.tau;
-  p.cohesive.alpha = solver.alpha;
-  p.nonOverlap = solver.nonOverlap;
-  p.metric = solver.metric;
-  return p;
-}
-
-Scene loadScene(const std::string& path) {
+std::string readSceneFile(const std::string& path) {
   std::error_code error;
   const std::filesystem::path inside = std::filesystem::path(path) / "scene.json";
   if (std::filesystem::is_directory(path, error) && std::filesystem::exists(inside, error))
     throw InputError(path + ": is a folder; the scene is its file " + inside.string());
-  return parseScene(readFile(path), path);
+  return readFile(path);
 }
+
+Scene loadScene(const std::string& path) { return parseScene(readSceneFile(path), path); }
 
 }  // namespace ib

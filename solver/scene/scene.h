@@ -1,13 +1,14 @@
 // The scene file: key drawings and the annotations that tie them together (features, cuts),
-// the reference key, the target edge length, tracing and solver parameters, the timeline,
-// dynamics and stiffness painting. Format: docs/scene-format.md. Coordinates are drawing
-// pixels, y down; paths are relative to the scene file.
+// the reference key, the timeline's marks, stiffness painting, and the parameters (the target
+// edge length, tracing, solver, timeline and dynamics fields: scene/parameters.h declares them).
+// Format: docs/scene-format.md. Coordinates are drawing pixels, y down; paths are relative to
+// the scene file.
 #pragma once
 
 #include "animation/dynamics.h"
 #include "animation/timeline.h"
 #include "core/plane_geometry.h"
-#include "interpolation/shape_metric.h"
+#include "interpolation/interpolation_params.h"
 #include "scene/meshing_options.h"
 #include "scene/stiffness.h"
 
@@ -52,15 +53,11 @@ struct KeySpec {
   Polyline holes = {};
 };
 
-struct SceneSolverParams {
-  double lambda = 4000;     // cohesive stiffness (paper eq. 11)
-  double tau = 1e-3;        // cohesive threshold, in units of the shape size sqrt(mean key area)
-  double alpha = 0.5;       // shear (0) versus stretch (1) resistance of cohesive pairs (eq. 13)
-  double kappa = 1;         // stiffness of every unpainted triangle (see "stiffness")
-  bool nonOverlap = false;  // W_O on or off
-  // How each triangle's keys are averaged (interpolation/shape_metric.h): "metric" in the scene,
-  // "shared" (default) or "per_key" (the paper's eq. 9).
-  ShapeMetric metric = ShapeMetric::kShared;
+// The timeline's own fields ("timeline": fps, loop, spacing); its marks are the scene's structure.
+struct TimelineSettings {
+  double fps = 24;      // frames per second. Default 24
+  bool loop = false;    // the last mark repeats the first's pose; frames stop before it. Default off
+  SegmentSpacing spacing = SegmentSpacing::kWeights;  // every segment's unless its mark says. Default weights
 };
 
 // How render, play and export filter the key drawings' texels, "sampling" in the scene: kLinear
@@ -84,8 +81,12 @@ struct Scene {
   CornerHandling corners = CornerHandling::kVertices;
   ArtworkSampling sampling = ArtworkSampling::kAuto;  // "sampling": how front ends filter the drawings
   TracingOptions tracing;
-  SceneSolverParams solver;
-  Timeline timeline;                // the default timeline (every key, a second apart) when absent
+  InterpolationParams interpolation;  // "solver": lambda, tau, alpha, non_overlap, metric
+  // "solver.kappa": the stiffness of every triangle not painted otherwise (eq. 16), painted into
+  // the multimesh with the "stiffness" field. Default 1.
+  double kappa = 1;
+  TimelineSettings timelineSettings;  // "timeline": fps, loop, spacing
+  Timeline timeline;                // its marks and settings; every key a second apart when it has no marks
   DynamicsParams dynamics;          // epsilon = 0 (off) when absent
   StiffnessPaint stiffness;         // nothing painted when absent
   // What the loader assumed about odd but accepted input (e.g. one key: a still), each naming the
@@ -95,13 +96,12 @@ struct Scene {
   int keyIndex(const std::string& name) const;  // -1 when absent
 };
 
-struct InterpolationParams;  // interpolator.h
-// The interpolation energies' parameters (lambda, tau, alpha, non-overlap) the scene asks for.
-InterpolationParams interpolationParams(const SceneSolverParams& solver);
-
 // Reads and validates a scene: every problem is an InputError naming the file, the field and the
 // key, e.g. `walk.json: key "arch": cut "split": needs at least 2 points`. Drawings are not read.
 Scene loadScene(const std::string& path);
+// The scene file's text; InputError naming it when it cannot be read (a folder holding a
+// scene.json: naming that file).
+std::string readSceneFile(const std::string& path);
 Scene parseScene(const std::string& text, const std::string& path);
 
 }  // namespace ib

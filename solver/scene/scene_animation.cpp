@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <set>
 
 namespace ib {
 
@@ -32,28 +33,27 @@ StiffnessRegion parseRegion(const json& j, const Context& first, const std::vect
   return region;
 }
 
-}  // namespace
-
-DynamicsParams parseDynamics(const json& j, const Context& at) {
-  requireObject(j, at,
-                {"epsilon", "gravity", "wind", "gust", "gust_frequency", "mu", "anchor", "settle", "max_deviation"});
-  DynamicsParams d;
-  d.epsilon = number(j, "epsilon", d.epsilon, at, 0, 1);
-  const std::string vector = "in shape sizes per second squared (y down)";
-  if (j.contains("gravity")) d.gravity = point(j["gravity"], at.in("gravity"), vector);
-  if (j.contains("wind")) d.wind = point(j["wind"], at.in("wind"), vector);
-  d.gust = number(j, "gust", d.gust, at, 0, 1);
-  d.gustFrequency = number(j, "gust_frequency", d.gustFrequency, at, 0, 1000, true);
-  d.mu = number(j, "mu", d.mu, at, 0, 1e6);
-  d.anchor = number(j, "anchor", d.anchor, at, 0, 1e6, true);
-  d.settle = number(j, "settle", d.settle, at, 0, 1, true);
-  d.maxDeviation = number(j, "max_deviation", d.maxDeviation, at, 0, 100, true);
-  return d;
+StiffnessStroke parseStroke(const json& j, const Context& at, const std::vector<std::string>& keyNames) {
+  requireObject(j, at, {"name", "key", "points", "radius", "kappa"});
+  StiffnessStroke stroke;
+  stroke.name = text(j, "name", at);
+  stroke.key = keyNamed(j, keyNames, at);
+  if (!j.contains("points") || !j["points"].is_array() || j["points"].empty())
+    throw at.error("needs \"points\": at least 1 point [x, y] in the key's drawing pixels");
+  for (size_t i = 0; i < j["points"].size(); ++i)
+    stroke.points.push_back(point(j["points"][i], at.in("point " + std::to_string(i + 1))));
+  if (!j.contains("radius")) throw at.error("missing field \"radius\" (px)");
+  stroke.radius = number(j, "radius", 4, at, 0.5, 1e4);
+  if (!j.contains("kappa")) throw at.error("missing field \"kappa\"");
+  stroke.kappa = number(j, "kappa", 1, at, 0, 1e6, true);
+  return stroke;
 }
+
+}  // namespace
 
 StiffnessPaint parseStiffness(const json& j, const Context& at, const std::vector<std::string>& keyNames,
                               const std::string& folder) {
-  requireObject(j, at, {"range", "image", "regions"});
+  requireObject(j, at, {"range", "image", "regions", "strokes"});
   StiffnessPaint paint;
   if (j.contains("range")) {
     const Eigen::Vector2d range = point(j["range"], at.in("range"), "as [soft, stiff] kappa");
@@ -74,6 +74,17 @@ StiffnessPaint parseStiffness(const json& j, const Context& at, const std::vecto
     for (size_t r = 0; r < j["regions"].size(); ++r)
       paint.regions.push_back(parseRegion(j["regions"][r], element(j["regions"][r], at, "region", r), keyNames));
   }
+  if (j.contains("strokes")) {
+    if (!j["strokes"].is_array()) throw at.in("strokes").error("must be an array of strokes");
+    for (size_t s = 0; s < j["strokes"].size(); ++s)
+      paint.strokes.push_back(parseStroke(j["strokes"][s], element(j["strokes"][s], at, "stroke", s), keyNames));
+  }
+  std::set<std::string> names;  // regions and strokes are named apart, for the editor to tell them apart
+  for (const StiffnessRegion& region : paint.regions)
+    if (!names.insert(region.name).second) throw at.error("region " + inQuotes(region.name) + " is named twice");
+  for (const StiffnessStroke& stroke : paint.strokes)
+    if (!names.insert(stroke.name).second)
+      throw at.error("stroke " + inQuotes(stroke.name) + " has the name of another region or stroke");
   return paint;
 }
 

@@ -13,12 +13,16 @@
 
 namespace ib {
 
-// Parses a scene's "timeline" object (docs/scene-format.md); keyNames in scene order. An absent
-// "marks" gives the default timeline. Throws InputError naming the file (`file`) and the field.
-Timeline parseTimeline(const nlohmann::json& j, const std::vector<std::string>& keyNames, const std::string& file);
+struct TimelineSettings;  // scene/scene.h
 
-// Reads "dynamics": epsilon, gravity, wind, gust, gust_frequency, mu, anchor, settle, max_deviation.
-DynamicsParams parseDynamics(const nlohmann::json& j, const json_fields::Context& at);
+// The timeline of a scene's "timeline" object (null: absent) with its fps, loop and spacing read
+// already (scene/parameters.h); keyNames in scene order. Without "marks": every key a second
+// apart (defaultTimeline). Throws InputError naming the file and the field (its own fields other
+// than "marks" are checked against the parameter table).
+Timeline parseTimeline(const nlohmann::json* j, const std::vector<std::string>& keyNames, const TimelineSettings& settings,
+                       const std::string& file);
+// The same for a "timeline" object on its own: its fps, loop and spacing read from it.
+Timeline parseTimeline(const nlohmann::json& j, const std::vector<std::string>& keyNames, const std::string& file);
 
 // Reads "stiffness": range [soft, stiff], image {key, path} (path relative to `folder`), regions
 // [{name, key, polygon, kappa}]. keyNames in scene order.

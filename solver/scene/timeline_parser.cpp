@@ -2,6 +2,8 @@
 #include "scene/scene_animation.h"
 
 #include "core/error.h"
+#include "scene/parameter_json.h"
+#include "scene/scene.h"
 
 #include <algorithm>
 #include <cmath>
@@ -38,30 +40,38 @@ Easing parseEasing(const json& j, const Context& at) {
   throw at.error("must be a name (linear, ease-in, ease-out, ease-in-out, hold) or {\"cubic_bezier\": [x1, y1, x2, y2]}");
 }
 
-// "spacing": "weights" (equal steps of the weights) or "even" (equal steps of the shape).
+// A mark's "spacing", one of the words of the timeline's (the parameter table's "spacing").
 SegmentSpacing parseSpacing(const json& j, SegmentSpacing fallback, const Context& at) {
   if (!j.contains("spacing")) return fallback;
+  const ParameterSpec& spec = parameter("spacing");
   const json& v = j["spacing"];
-  if (v.is_string() && v.get<std::string>() == "weights") return SegmentSpacing::kWeights;
-  if (v.is_string() && v.get<std::string>() == "even") return SegmentSpacing::kEven;
-  throw at.in("spacing").error("must be \"weights\" (equal steps of the weights) or \"even\" (equal steps of the shape)");
+  if (v.is_string())
+    for (size_t i = 0; i < spec.choices.size(); ++i)
+      if (spec.choices[i].word == v.get<std::string>()) return static_cast<SegmentSpacing>(i);
+  std::string words;
+  for (size_t i = 0; i < spec.choices.size(); ++i)
+    words += (i == 0 ? "" : " or ") + inQuotes(spec.choices[i].word) + " (" + spec.choices[i].meaning + ")";
+  throw at.in("spacing").error("must be " + words);
 }
 
 }  // namespace
 
-Timeline parseTimeline(const json& j, const std::vector<std::string>& keyNames, const std::string& file) {
+Timeline parseTimeline(const json* timeline, const std::vector<std::string>& keyNames, const TimelineSettings& settings,
+                       const std::string& file) {
   const Context at = Context{file, ""}.in("timeline");
-  requireObject(j, at, {"fps", "loop", "marks", "spacing"});
-  const double fps = number(j, "fps", 24, at, 0, 1000, true);
-  const bool loop = boolean(j, "loop", false, at);
-  const SegmentSpacing spacing = parseSpacing(j, SegmentSpacing::kWeights, at);  // every segment's unless its mark says
-  if (!j.contains("marks")) {
+  const double fps = settings.fps;
+  const bool loop = settings.loop;
+  const SegmentSpacing spacing = settings.spacing;  // every segment's unless its mark says
+  std::set<std::string> allowed = parameterFields("timeline");
+  allowed.insert("marks");
+  if (timeline) requireObject(*timeline, at, allowed);
+  if (!timeline || !timeline->contains("marks")) {
     const Timeline plain = defaultTimeline(keyNames, fps, loop);
     std::vector<TimelineSegment> segments = plain.segments();
     for (TimelineSegment& segment : segments) segment.spacingKind = spacing;
     return Timeline(fps, plain.loops(), plain.marks(), std::move(segments));
   }
-  const json& marksJson = j["marks"];
+  const json& marksJson = (*timeline)["marks"];
   if (!marksJson.is_array() || marksJson.empty()) throw at.in("marks").error("must be an array of at least one mark");
   std::vector<TimelineMark> marks;
   std::vector<TimelineSegment> segments;
@@ -107,6 +117,12 @@ Timeline parseTimeline(const json& j, const std::vector<std::string>& keyNames, 
       throw at.in("loop").error("the last mark must repeat the first mark's pose, so the loop closes without a jump");
   }
   return Timeline(fps, loop, std::move(marks), std::move(segments));
+}
+
+Timeline parseTimeline(const json& j, const std::vector<std::string>& keyNames, const std::string& file) {
+  Scene settings;
+  readParameters(json{{"timeline", j}}, Context{file, ""}, settings);
+  return parseTimeline(&j, keyNames, settings.timelineSettings, file);
 }
 
 }  // namespace ib

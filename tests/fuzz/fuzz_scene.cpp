@@ -13,7 +13,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);
   try {
     const ib::Scene scene = ib::parseScene(text, "/nonexistent/fuzz/scene.json");
-    (void)ib::interpolationParams(scene.solver);
+    (void)scene.interpolation;
   } catch (const ib::InputError&) {
   }
   return 0;

@@ -1,7 +1,7 @@
 // welded_frames SCENE --mesh FILE OUT.json [--frames A:B]: the reference positions the export's
 // client checks (tests/clients) compare against. Plays the scene's timeline exactly as
-// `inbetween render` does (apps/commands/render_command.cpp: the same FrameStream, the cuts
-// welded at one target pixel per drawing pixel) and writes every frame's welded positions in
+// `inbetween render` does (the frame stream of pipeline/scene_frames.h, the cuts welded at one
+// target pixel per drawing pixel) and writes every frame's welded positions in
 // drawing pixels:
 //   {"shapeSize": s, "canvas": [W, H], "fps": f,
 //    "frames": [{"index": i, "time": t, "weights": [w0, ...], "positions": [x0, y0, ...]}]}
@@ -12,6 +12,7 @@
 #include "multimesh/multimesh.h"
 #include "output/render_mesh.h"
 #include "pipeline/key_drawings.h"
+#include "pipeline/scene_frames.h"
 #include "pipeline/scene_multimesh.h"
 #include "scene/scene.h"
 
@@ -50,7 +51,7 @@ int main(int argc, char** argv) {
       canvasH = std::max(canvasH, d.height);
     }
     const ib::render::RenderMesh renderMesh = ib::render::renderMeshOf(mesh, std::move(drawings));
-    ib::FrameStream stream(mesh, scene.timeline, ib::interpolationParams(scene.solver), ib::SolverOptions{}, scene.dynamics);
+    ib::FrameStream stream = ib::sceneFrameStream(scene, mesh);
     if (last < 0) last = stream.frameCount() - 1;
     if (first < 0 || first > last || last >= stream.frameCount()) {
       std::fprintf(stderr, "welded_frames: --frames %d:%d: the timeline has frames 0..%d\n", first, last, stream.frameCount() - 1);

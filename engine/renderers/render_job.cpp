@@ -1,0 +1,119 @@
+#include "renderers/render_job.h"
+
+#include "core/atomic_file.h"
+#include "core/error.h"
+#include "gpu/vulkan_check.h"
+#include "gpu/vulkan_context.h"
+#include "multimesh/multimesh.h"
+#include "output/animated_png.h"
+#include "output/contact_sheet.h"
+#include "output/onion_window.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <deque>
+#include <filesystem>
+
+namespace ib::render {
+
+namespace {
+
+// The offscreen target; a size the device has no memory for is the user's size, not an internal error.
+OffscreenRenderer makeRenderer(const vk::VulkanContext& context, const RenderMesh& mesh, const OffscreenOptions& target) {
+  try {
+    return OffscreenRenderer(context, mesh, target);
+  } catch (const vk::VulkanError& e) {
+    if (e.result() != VK_ERROR_OUT_OF_DEVICE_MEMORY && e.result() != VK_ERROR_OUT_OF_HOST_MEMORY) throw;
+    throw InputError("--size " + std::to_string(target.width) + "x" + std::to_string(target.height) + ": " +
+                     context.deviceName() + " has not enough memory for a target of that size with " +
+                     std::to_string(target.samples) + " samples (" + e.what() + "): choose a smaller --size or fewer --samples");
+  }
+}
+
+}  // namespace
+
+std::string framePath(const std::string& folder, int frame) {
+  char name[32];
+  std::snprintf(name, sizeof name, "frame_%04d.png", frame);
+  return (std::filesystem::path(folder) / name).string();
+}
+
+RenderJobReport renderFrames(const vk::VulkanContext& context, const Scene& scene, const Multimesh& mesh,
+                             std::vector<RgbaImage> drawings, const std::vector<int>& features,
+                             const RenderJobOptions& options, const JobProgress& progress) {
+  const int frameCount = scene.timeline.frameCount();
+  const auto [first, last] = options.frames;
+  if (first < 0 || first > last || last >= frameCount)
+    throw InputError("--frames: the timeline has frames 0.." + std::to_string(frameCount - 1) + ", asked for " +
+                     std::to_string(first) + ".." + std::to_string(last));
+  for (const int f : options.sheetFrames)
+    if (f < first || f > last)
+      throw InputError("--sheet-frames: frame " + std::to_string(f) + " is not rendered (frames " + std::to_string(first) +
+                       ".." + std::to_string(last) + "): choose frames within --frames");
+  int canvasW = 0, canvasH = 0;
+  for (const RgbaImage& d : drawings) {
+    canvasW = std::max(canvasW, d.width);
+    canvasH = std::max(canvasH, d.height);
+  }
+  const RenderMesh renderMesh = renderMeshOf(mesh, std::move(drawings), features);
+  OffscreenRenderer renderer = makeRenderer(context, renderMesh, options.target);
+  const int width = options.target.width, height = options.target.height;
+  const ViewBox view = fitView({0, 0, double(canvasW), double(canvasH)}, width, height, 0);
+  FrameStream stream = sceneFrameStream(scene, mesh, options.solving);
+
+  const int rendered = last - first + 1;
+  const int every = options.sheetEvery > 0 ? options.sheetEvery : (rendered + 35) / 36;
+  const auto onSheet = [&](int f) {
+    if (!options.sheetFrames.empty()) return std::binary_search(options.sheetFrames.begin(), options.sheetFrames.end(), f);
+    return (f - first) % every == 0;
+  };
+  const int tileW = std::min(240, width);
+  const int tileH = std::max(1, static_cast<int>(std::lround(double(tileW) * height / width)));
+  std::vector<RgbaImage> tiles, preview;
+  std::deque<int> inFlight;  // frame indices submitted, oldest first
+  RenderJobReport report;
+  const auto started = std::chrono::steady_clock::now();
+  const auto collect = [&] {
+    const int f = inFlight.front();
+    inFlight.pop_front();
+    const RgbaImage image = renderer.take();
+    writePng(framePath(options.folder, f), image);
+    const bool sheet = onSheet(f);
+    if (sheet || options.preview) {
+      RgbaImage tile = shrink(image, tileW, tileH);
+      if (sheet) tiles.push_back(tile);
+      if (options.preview) preview.push_back(std::move(tile));
+    }
+    ++report.written;
+    if (progress)
+      progress("rendering frame " + std::to_string(f) + " (" + std::to_string(report.written) + " of " +
+                   std::to_string(rendered) + ")",
+               double(report.written) / rendered);
+  };
+  OnionStyle onion;
+  onion.neighbours = options.onion;
+  playWithNeighbours(stream, options.frames, options.onion, [&](const std::deque<AnimationFrame>& window, size_t at) {
+    FrameDraw request = frameWithOnionSkins(window, at, onion, view, options.overlays);
+    request.sampling = options.sampling;
+    renderer.submit(request);
+    inFlight.push_back(window[at].index);
+    while (static_cast<int>(inFlight.size()) > 2) collect();
+  });
+  while (!inFlight.empty()) collect();
+  report.sheet = (std::filesystem::path(options.folder) / "contact_sheet.png").string();
+  ContactSheetOptions sheet;
+  sheet.columns = options.sheetColumns;
+  writePng(report.sheet, contactSheet(tiles, sheet));
+  if (options.preview) {
+    report.preview = (std::filesystem::path(options.folder) / "preview.png").string();
+    writeFileAtomically(report.preview, encodeAnimatedPng(preview, static_cast<int>(std::lround(1000 / scene.timeline.fps()))));
+  }
+  report.firstFrame = framePath(options.folder, first);
+  report.lastFrame = framePath(options.folder, last);
+  report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  return report;
+}
+
+}  // namespace ib::render

@@ -1,0 +1,29 @@
+// The parameters of the interpolation energies (eq. 9): the cohesive energy W_C (eqs. 10-13;
+// cohesive_energy.h), the non-overlap term and the shape metric, on their own so that the scene
+// and the interpolator's public header need not include the energies. The scene file's fields and
+// their ranges are in scene/parameters.h; the defaults here are the table's.
+#pragma once
+
+#include "interpolation/shape_metric.h"
+
+namespace ib {
+
+// Cohesive parameters in normalized units (lengths divided by the shape size).
+struct CohesiveParams {
+  double lambda = 4000.0;  // cohesive stiffness lambda (eq. 10); paper default 4e3
+  double tau = 1e-3;       // clamp threshold tau (eq. 11): normalized energy per cohesive pair (lengths in
+                           // shape sizes); infinity never separates
+  double alpha = 0.5;      // shear/stretch control alpha in [0, 1] (eq. 13): the jump along the
+                           // edge costs (1 - alpha), across it alpha; larger alpha = easier shear
+};
+
+struct InterpolationParams {
+  CohesiveParams cohesive;  // lambda, tau, alpha (normalized units)
+  bool nonOverlap = false;  // enforce W_O (eq. 14); off by default, as in the paper
+  // How each triangle's keys are averaged (shape_metric.h): kShared, one metric per triangle
+  // blended by the weights (no shrinking or snapping under stretch; a departure from the paper),
+  // or kPerKey, the paper's eq. 9. Default kShared (docs/solver.md, "Departures from the paper").
+  ShapeMetric metric = ShapeMetric::kShared;
+};
+
+}  // namespace ib
