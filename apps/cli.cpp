@@ -1,6 +1,7 @@
 #include "cli.h"
 
 #include "core/error.h"
+#include "core/suggest.h"
 
 #include <algorithm>
 #include <cctype>
@@ -39,7 +40,12 @@ Arguments::Arguments(const std::string& command, const std::vector<std::string>&
       }
       values_[name] = value;
     } else {
-      throw InputError(command_ + ": unknown option --" + name + " (see `inbetween " + command_ + " --help`)");
+      std::vector<std::string> known;
+      for (const std::string& option : valueOptions) known.push_back(option);
+      for (const std::string& option : flagOptions) known.push_back(option);
+      std::string suggestion = didYouMean(name, known);
+      if (!suggestion.empty()) suggestion.replace(suggestion.find('"'), 1, "\"--");
+      throw InputError(command_ + ": unknown option --" + name + suggestion + " (see `inbetween " + command_ + " --help`)");
     }
   }
 }

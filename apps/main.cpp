@@ -1,6 +1,6 @@
 // The `inbetween` command: a thin front end over the solver and the engine.
 // Exit codes: 0 success, 2 bad input (message names the file, field or option), 1 internal error.
-#include "bench/bench.h"
+#include "commands/bench_launcher.h"
 #include "commands/export_command.h"
 #include "commands/mesh_command.h"
 #include "commands/parameters_command.h"
@@ -9,6 +9,7 @@
 #include "commands/render_command.h"
 #endif
 #include "core/error.h"
+#include "core/suggest.h"
 
 #include <cstdio>
 #include <exception>
@@ -63,7 +64,7 @@ int run(const std::vector<std::string>& args) {
     return 0;
   }
   const std::vector<std::string> rest(args.begin() + 1, args.end());
-  if (command == "bench") return ib::runBench(rest);
+  if (command == "bench") ib::runBenchProgram(rest);
   if (command == "mesh") return ib::runMesh(rest);
   if (command == "parameters") return ib::runParameters(rest);
   if (command == "export") return ib::runExport(rest);
@@ -74,7 +75,9 @@ int run(const std::vector<std::string>& args) {
   if (command == "render" || command == "play")
     throw ib::InputError(command + ": this inbetween was built without the engine (INBETWEEN_ENGINE=OFF)");
 #endif
-  throw ib::InputError("unknown command '" + command + "' (see `inbetween --help`)");
+  throw ib::InputError("unknown command '" + command + "'" +
+                       ib::didYouMean(command, {"mesh", "render", "play", "export", "parameters", "bench"}) +
+                       " (see `inbetween --help`)");
 }
 
 }  // namespace

@@ -162,8 +162,9 @@ TEST_CASE("scene: a dotted plain feature says dots are reserved for cut features
         "scene has no cut \"a\": rename it to \"a-b\" in every key that places it");
   json lip = squareArch();
   lip["keys"][1]["features"]["split.lip"] = {64, 20};
-  CHECK(messageOf(lip).find("and cut \"split\" creates \"split.left\", \"split.right\", \"split.tip\": use one of "
-                            "those, or if \"split.lip\" is a plain feature, rename it to \"split-lip\"") != std::string::npos);
+  CHECK(messageOf(lip).find("and cut \"split\" creates \"split.left\", \"split.right\", \"split.tip\" (did you mean "
+                            "\"split.tip\"?): use one of those, or if \"split.lip\" is a plain feature, rename it to "
+                            "\"split-lip\"") != std::string::npos);
 }
 
 TEST_CASE("scene: a one-key scene loads with a note that the animation is a still; two keys give no note") {

@@ -37,6 +37,17 @@ void StealMeter::addTo(nlohmann::json& line) const {
   line["steal_percent"] = 100.0 * double(now->steal - start_->steal) / double(now->total - start_->total);
 }
 
+std::filesystem::path bundledAssets(const std::string& bench) {
+  namespace fs = std::filesystem;
+  std::error_code error;
+  const fs::path self = fs::read_symlink("/proc/self/exe", error);
+  const fs::path assets = self.parent_path().parent_path() / "share" / "inbetween" / "assets";
+  if (error || !fs::is_directory(assets, error))
+    throw InputError("bench " + bench + ": no bundled scenes at " + assets.string() +
+                     ": give --assets DIR, a folder of NAME/scene.json (the source tree's assets/)");
+  return assets;
+}
+
 void showStatus(const std::string& text) {
   if (isatty(STDERR_FILENO)) std::fprintf(stderr, "\r\033[K%s", text.c_str());
 }

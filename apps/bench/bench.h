@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
@@ -65,6 +66,12 @@ class StealMeter {
   static std::optional<Ticks> read();
   std::optional<Ticks> start_;
 };
+
+// The bundled scenes, for the benchmarks' default --assets: share/inbetween/assets beside the
+// program's folder (<prefix>/bin -> <prefix>/share/inbetween/assets when installed; the build
+// tree links the source tree's assets/ there). InputError when there is none, saying to give
+// --assets.
+std::filesystem::path bundledAssets(const std::string& bench);
 
 // One line of status on stderr, rewritten in place, when stderr is a terminal; "" clears it.
 void showStatus(const std::string& text);

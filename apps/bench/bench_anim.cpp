@@ -28,7 +28,7 @@ constexpr const char* kUsage =
     "iterations_per_frame (mean), converged (share of frames), max_deviation (shape sizes from plain\n"
     "interpolation).\n"
     "\n"
-    "  --assets DIR   folder of scenes (default: the source tree's assets/)\n"
+    "  --assets DIR   folder of scenes (default: the bundled scenes)\n"
     "  --comesh       run Comesh Optimization before playing (default: the initial map)\n"
     "  --threads N    solver threads, 0 = all cores (default 0)\n";
 
@@ -73,7 +73,7 @@ nlohmann::json playScene(const std::filesystem::path& file, bool comesh, int thr
 }
 
 void run(const cli::Arguments& a, const BenchOutput& output) {
-  const std::filesystem::path assets = a.value("assets", INBETWEEN_ASSETS);
+  const std::filesystem::path assets = a.has("assets") ? std::filesystem::path(a.value("assets", "")) : bundledAssets("anim");
   const int threads = cli::integerList(a.value("threads", "0"), "threads", 0, 256).front();
   if (!std::filesystem::is_directory(assets)) throw InputError("bench anim: --assets: " + assets.string() + " is not a folder");
   std::vector<std::filesystem::path> scenes;

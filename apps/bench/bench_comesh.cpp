@@ -55,7 +55,7 @@ nlohmann::json runCase(Scene scene, const std::string& label) {
 void run(const cli::Arguments& a, const BenchOutput& output) {
   const std::vector<int> sizes = cli::integerList(a.value("sizes", "300,1k,17k,100k"), "sizes", 50, 1000000);
   const std::vector<int> keyCounts = cli::integerList(a.value("keys", "2,4,8,16"), "keys", 2, 16);
-  const std::filesystem::path assets = a.value("assets", INBETWEEN_ASSETS);
+  const std::filesystem::path assets = a.has("assets") ? std::filesystem::path(a.value("assets", "")) : bundledAssets("comesh");
 
   const Scene squareHexagon = loadScene((assets / "square-hexagon" / "scene.json").string());
   // Vertex count goes with 1 / edge length^2: calibrated on the bundled scene at 300-17k vertices.

@@ -33,7 +33,7 @@ constexpr const char* kUsage =
     "           frame's setup and factorizations), and the parameters: epsilon, tau, alpha, mu,\n"
     "           uniform_material (nothing painted), animation_curve (some mark eases)\n"
     "\n"
-    "  --assets DIR   folder holding the examples (default: the source tree's assets/)\n"
+    "  --assets DIR   folder holding the examples (default: the bundled scenes)\n"
     "  --only NAME    one example, by folder name\n"
     "  --threads N    solver threads, 0 = all cores (default 0)\n";
 
@@ -147,7 +147,7 @@ nlohmann::json animationTable(const std::string& name, const Scene& scene, const
 }
 
 void run(const cli::Arguments& a, const BenchOutput& output) {
-  const std::filesystem::path assets = a.value("assets", INBETWEEN_ASSETS);
+  const std::filesystem::path assets = a.has("assets") ? std::filesystem::path(a.value("assets", "")) : bundledAssets("examples");
   const int threads = cli::integerList(a.value("threads", "0"), "threads", 0, 256).front();
   const std::string only = a.value("only", "");
   if (!std::filesystem::is_directory(assets)) throw InputError("bench examples: --assets: " + assets.string() + " is not a folder");

@@ -32,7 +32,7 @@ constexpr const char* kUsage =
     "triangles, keys, width, height, samples, device, vsync, frames, fps, p50_ms, p95_ms, changes,\n"
     "latency_ms (median), latency_max_ms.\n"
     "\n"
-    "  --assets DIR   folder of scenes (default: the source tree's assets/)\n"
+    "  --assets DIR   folder of scenes (default: the bundled scenes)\n"
     "  --scenes LIST  comma-separated scene folder names (default: every one)\n"
     "  --size WxH     window size (default 1280x720)\n"
     "  --frames N     frames timed while playing, after 30 untimed (default 240)\n"
@@ -123,7 +123,7 @@ nlohmann::json benchScene(const std::filesystem::path& file, const play::PlayerW
 }
 
 void run(const cli::Arguments& a, const BenchOutput& output) {
-  const std::filesystem::path assets = a.value("assets", INBETWEEN_ASSETS);
+  const std::filesystem::path assets = a.has("assets") ? std::filesystem::path(a.value("assets", "")) : bundledAssets("play");
   if (!std::filesystem::is_directory(assets)) throw InputError("bench play: --assets: " + assets.string() + " is not a folder");
   std::vector<std::filesystem::path> files;
   const std::string only = a.value("scenes", "");

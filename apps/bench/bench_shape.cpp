@@ -33,7 +33,7 @@ constexpr const char* kUsage =
     "max_retime (with --spacing even: how far it moves a pose in time, in segment fractions),\n"
     "iterations_per_step, converged (share of steps), seconds (solving, the even-spacing samples included).\n"
     "\n"
-    "  --assets DIR    folder of scenes, each DIR/NAME/scene.json (default: the source tree's assets/)\n"
+    "  --assets DIR    folder of scenes, each DIR/NAME/scene.json (default: the bundled scenes)\n"
     "  --scene FILE    one scene instead\n"
     "  --metric M      shared, per_key or both (default both)\n"
     "  --steps N       steps per segment, 4..1000 (default 24)\n"
@@ -127,7 +127,7 @@ void run(const cli::Arguments& a, const BenchOutput& output) {
   if (a.has("scene")) {
     scenes.push_back(a.value("scene", ""));
   } else {
-    const std::filesystem::path assets = a.value("assets", INBETWEEN_ASSETS);
+    const std::filesystem::path assets = a.has("assets") ? std::filesystem::path(a.value("assets", "")) : bundledAssets("shape");
     if (!std::filesystem::is_directory(assets)) throw InputError("bench shape: --assets: " + assets.string() + " is not a folder");
     for (const auto& entry : std::filesystem::directory_iterator(assets))
       if (std::filesystem::exists(entry.path() / "scene.json")) scenes.push_back(entry.path() / "scene.json");

@@ -1,5 +1,7 @@
 #include "core/json_fields.h"
 
+#include "core/suggest.h"
+
 #include <cmath>
 
 namespace ib::json_fields {
@@ -18,7 +20,8 @@ void requireObject(const json& j, const Context& at, const std::set<std::string>
     if (!allowed.count(it.key())) {
       std::string list;
       for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
-      throw at.error("unknown field " + inQuotes(it.key()) + " (expected one of: " + list + ")");
+      throw at.error("unknown field " + inQuotes(it.key()) + didYouMean(it.key(), {allowed.begin(), allowed.end()}) +
+                     " (expected one of: " + list + ")");
     }
 }
 

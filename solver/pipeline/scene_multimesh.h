@@ -62,9 +62,9 @@ struct SceneMultimesh {
   std::shared_ptr<const ComeshReport> comesh;    // Comesh Optimization's statistics when it ran
 
   // What was assumed about odd but accepted input, whatever the source: sceneNotes(scene); and,
-  // when Comesh ran here, each key or map it left worse than the initial map (a smallest angle
-  // lower, a larger share under 20 degrees, a MIPS maximum higher). Front ends print them
-  // (`inbetween: note: ...`); the library never does.
+  // when Comesh ran here, a key it left with a smallest angle under 10 degrees or a map with a
+  // MIPS maximum above 20 that the initial map did not have, with what to do. Front ends print
+  // them (`inbetween: note: ...`); the library never does.
   std::vector<std::string> notes;
 };
 

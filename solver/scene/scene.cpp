@@ -3,6 +3,7 @@
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/json_fields.h"
+#include "core/suggest.h"
 #include "scene/parameter_json.h"
 #include "scene/scene_animation.h"
 
@@ -97,6 +98,15 @@ KeySpec parseKey(const json& j, const Context& scene, const std::filesystem::pat
   return key;
 }
 
+// When the key places a name close to `missing` (a typo), "; it places "topp": did you mean "top"?".
+std::string typoOf(const std::string& missing, const std::map<std::string, Eigen::Vector2d>& placed) {
+  std::vector<std::string> names;
+  for (const auto& [name, p] : placed) names.push_back(name);
+  for (const std::string& name : names)
+    if (!didYouMean(name, {missing}).empty()) return "; it places " + inQuotes(name) + ": did you mean " + inQuotes(missing) + "?";
+  return "";
+}
+
 // A plain feature named with a '.', which is reserved for the features cuts create: what the cut
 // named before the dot creates, or that there is no such cut, and what to rename it to.
 InputError dottedFeature(const Context& key, const std::string& f,
@@ -112,8 +122,9 @@ InputError dottedFeature(const Context& key, const std::string& f,
                      " in every key that places it");
   std::string created;
   for (const std::string& name : cutFeatureNames(cut, it->second.first)) created += (created.empty() ? "" : ", ") + inQuotes(name);
-  return key.error(what + "and cut " + inQuotes(cut) + " creates " + created + ": use one of those, or if " + inQuotes(f) +
-                   " is a plain feature, rename it to " + inQuotes(plain) + " in every key that places it");
+  return key.error(what + "and cut " + inQuotes(cut) + " creates " + created + didYouMean(f, cutFeatureNames(cut, it->second.first)) +
+                   ": use one of those, or if " + inQuotes(f) + " is a plain feature, rename it to " + inQuotes(plain) +
+                   " in every key that places it");
 }
 
 // Every key places the same plain features; a cut's features are placed exactly by the keys where
@@ -147,7 +158,7 @@ void checkCorrespondence(const Scene& scene, const Context& at) {
     for (const auto& [f, owner] : plain)
       if (!key.features.count(f))
         throw at.in("key " + inQuotes(key.name)).error("does not place feature " + inQuotes(f) + " (key " + inQuotes(owner) +
-                                                    " does)");
+                                                    " does)" + typoOf(f, key.features));
   for (const auto& [name, cut] : cuts)
     for (int k = 0; k < static_cast<int>(scene.keys.size()); ++k) {
       const bool closed = std::count(cut.second.begin(), cut.second.end(), k) > 0;
@@ -178,7 +189,8 @@ void checkInteriorFeatures(const Scene& scene, const Context& at) {
     for (const auto& [f, owner] : interior)
       if (!key.interiorFeatures.count(f))
         throw at.in("key " + inQuotes(key.name)).error("does not place interior feature " + inQuotes(f) + " (key " +
-                                                    inQuotes(owner) + " does): every key places the same interior features, "
+                                                    inQuotes(owner) + " does)" + typoOf(f, key.interiorFeatures) +
+                                                    ": every key places the same interior features, "
                                                     "each where that point of the drawing is in this key");
 }
 
@@ -249,7 +261,12 @@ Scene parseScene(const std::string& source, const std::string& path) {
   }
   if (j.contains("reference")) {
     scene.reference = j["reference"].is_string() ? scene.keyIndex(j["reference"].get<std::string>()) : -1;
-    if (scene.reference < 0) throw at.in("reference").error("must name one of the keys");
+    if (scene.reference < 0) {
+      std::vector<std::string> names;
+      for (const KeySpec& key : scene.keys) names.push_back(key.name);
+      throw at.in("reference").error("must name one of the keys" +
+                                     (j["reference"].is_string() ? didYouMean(j["reference"].get<std::string>(), names) : ""));
+    }
   }
   readParameters(j, at, scene);
   checkCorrespondence(scene, at);

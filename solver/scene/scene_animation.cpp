@@ -1,5 +1,7 @@
 #include "scene/scene_animation.h"
 
+#include "core/suggest.h"
+
 #include <algorithm>
 #include <filesystem>
 #include <set>
@@ -14,7 +16,8 @@ namespace {
 int keyNamed(const json& j, const std::vector<std::string>& keyNames, const Context& at) {
   const std::string name = text(j, "key", at);
   const auto found = std::find(keyNames.begin(), keyNames.end(), name);
-  if (found == keyNames.end()) throw at.in("key").error(inQuotes(name) + " is not a key of this scene");
+  if (found == keyNames.end())
+    throw at.in("key").error(inQuotes(name) + " is not a key of this scene" + didYouMean(name, keyNames));
   return static_cast<int>(found - keyNames.begin());
 }
 

@@ -2,6 +2,7 @@
 #include "scene/scene_animation.h"
 
 #include "core/error.h"
+#include "core/suggest.h"
 #include "scene/parameter_json.h"
 #include "scene/scene.h"
 
@@ -21,7 +22,7 @@ Eigen::VectorXd parseWeights(const json& j, const std::vector<std::string>& keys
   Eigen::VectorXd w = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(keys.size()));
   for (auto it = j.begin(); it != j.end(); ++it) {
     const auto found = std::find(keys.begin(), keys.end(), it.key());
-    if (found == keys.end()) throw at.error(inQuotes(it.key()) + " is not a key of this scene");
+    if (found == keys.end()) throw at.error(inQuotes(it.key()) + " is not a key of this scene" + didYouMean(it.key(), keys));
     w(found - keys.begin()) = number(j, it.key(), 0, at, 0, 1e9);
   }
   if (!(w.sum() > 0)) throw at.error("needs a positive weight for at least one key");
@@ -88,7 +89,8 @@ Timeline parseTimeline(const json* timeline, const std::vector<std::string>& key
     if (mj.contains("key")) {
       mark.label = text(mj, "key", here);
       const auto found = std::find(keyNames.begin(), keyNames.end(), mark.label);
-      if (found == keyNames.end()) throw here.in("key").error(inQuotes(mark.label) + " is not a key of this scene");
+      if (found == keyNames.end())
+        throw here.in("key").error(inQuotes(mark.label) + " is not a key of this scene" + didYouMean(mark.label, keyNames));
       mark.weights = Eigen::VectorXd::Unit(static_cast<Eigen::Index>(keyNames.size()), found - keyNames.begin());
     } else {
       mark.label = "breakdown";
