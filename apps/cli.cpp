@@ -135,4 +135,14 @@ double positiveNumber(const std::string& text, const std::string& option, double
   return value;
 }
 
+std::vector<std::string> wordList(const std::string& text, const std::string& option) {
+  std::vector<std::string> words;
+  std::stringstream in(text);
+  std::string word;
+  while (std::getline(in, word, ','))
+    if (!word.empty()) words.push_back(word);
+  if (words.empty()) throw InputError(option + ": '" + text + "' names nothing: give NAME[,NAME...]");
+  return words;
+}
+
 }  // namespace ib::cli

@@ -39,6 +39,9 @@ bool printHelpIfAsked(const std::vector<std::string>& args, const char* usage);
 // for option --`option` (named in the error).
 std::vector<int> integerList(const std::string& text, const std::string& option, int min, int max);
 
+// A comma-separated list of non-empty words, for option `option` (named in the error).
+std::vector<std::string> wordList(const std::string& text, const std::string& option);
+
 // "A:B" (inclusive, A <= B) or "A", both whole numbers >= 0, for option `option` (named in errors).
 std::array<int, 2> frameRange(const std::string& text, const std::string& option);
 

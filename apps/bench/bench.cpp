@@ -55,7 +55,7 @@ void showStatus(const std::string& text) {
 namespace {
 
 std::vector<Benchmark> benchmarks() {
-  return {interpBenchmark(), comeshBenchmark(), animBenchmark(),
+  return {interpBenchmark(), comeshBenchmark(), animBenchmark(), meshBenchmark(),
 #ifdef INBETWEEN_WITH_ENGINE
           renderBenchmark(), playBenchmark(),
 #endif

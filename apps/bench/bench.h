@@ -40,6 +40,7 @@ struct Benchmark {
 Benchmark interpBenchmark();
 Benchmark comeshBenchmark();
 Benchmark animBenchmark();
+Benchmark meshBenchmark();
 #ifdef INBETWEEN_WITH_ENGINE
 Benchmark renderBenchmark();
 Benchmark playBenchmark();

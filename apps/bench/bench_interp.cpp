@@ -3,6 +3,7 @@
 #include "bench/bench.h"
 
 #include "animation/warm_start.h"
+#include "bench/contended_core.h"
 #include "interpolation/interpolator.h"
 #include "testkit/reference_arap.h"
 #include "testkit/shape_generators.h"
@@ -11,6 +12,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 namespace ib {
 
@@ -18,7 +20,7 @@ namespace {
 
 constexpr const char* kUsage =
     "usage: inbetween bench interp [--sizes LIST] [--keys LIST] [--frames N] [--repeats N] [--threads N]\n"
-    "                              [--no-baseline]\n"
+    "                              [--no-baseline] [--contended]\n"
     "\n"
     "Interpolation solver on strips built in code (rest, 180-degree bend, stretch, wave keys).\n"
     "One JSON line per (vertices, keys) case:\n"
@@ -45,13 +47,20 @@ constexpr const char* kUsage =
     "                      sweeps and yardsticks (Linux /proc/stat; absent elsewhere). Above a few\n"
     "                      percent a vCPU was taken away mid-run: two-thread times then show the host\n"
     "                      more than the code\n"
+    "  threads_used        mean threads the sweep's iterations ran on (the thread budget's choice:\n"
+    "                      fewer than threads while other programs keep cores busy)\n"
+    "  with --contended, also: one_thread_ms_per_frame, one_thread_ms_per_iter (the same sweeps on one\n"
+    "                      thread, alternating with them) and vs_one_thread (ms_per_frame over\n"
+    "                      one_thread_ms_per_frame)\n"
     "\n"
     "  --sizes LIST    approximate vertex counts, e.g. 1k,10k,100k (default)\n"
     "  --keys LIST     key counts, each 1..4 (default 2,4)\n"
     "  --frames N      frames in the warm-started sweep (default 24)\n"
     "  --repeats N     sweeps per case; times are their medians (default 3)\n"
     "  --threads N     threads (default: all cores)\n"
-    "  --no-baseline   skip the plain local-global comparison (slow at 100k)\n";
+    "  --no-baseline   skip the plain local-global comparison (slow at 100k)\n"
+    "  --contended     a busy process pinned to one core for the whole run (bench/contended_core.h);\n"
+    "                  each sweep is also run on one thread, for comparison\n";
 
 using Clock = std::chrono::steady_clock;
 double millisecondsSince(Clock::time_point t) {
@@ -86,6 +95,7 @@ struct Sweep {
          factorMs = 0;
   double referenceMsPerIter = 0;  // the yardstick, timed right after the sweep
   int factorizations = 0, unconverged = 0, threads = 0;
+  double threadsUsed = 0;  // mean threads the frames' last iterations ran on
   long factorNonZeros = 0;
 };
 
@@ -115,6 +125,7 @@ Sweep runSweep(const Multimesh& mesh, const InterpolationParams& params, const S
     evaluations += previous.evaluations;
     out.factorizations += previous.factorizations;
     out.unconverged += !previous.converged;
+    out.threadsUsed += double(previous.threads) / frames;
   }
   out.msPerFrame = totalMs / frames;
   out.msPerIter = (totalMs - factorMs) / std::max(1L, iterations);
@@ -171,7 +182,7 @@ double median(std::vector<Sweep> runs, Get get) {
   return get(runs[runs.size() / 2]);
 }
 
-nlohmann::json benchCase(int vertices, int keys, int frames, int repeats, int threads, bool baseline) {
+nlohmann::json benchCase(int vertices, int keys, int frames, int repeats, int threads, bool baseline, bool contended) {
   const Multimesh mesh = benchmarkStrip(vertices, keys);
   InterpolationParams params;
   SolverOptions options;
@@ -184,13 +195,19 @@ nlohmann::json benchCase(int vertices, int keys, int frames, int repeats, int th
   // speed at that moment.
   Yardstick yardstick(mesh);
   const int referenceIterations = std::max(5, 200000 / mesh.vertexCount());
-  std::vector<Sweep> runs;
+  std::vector<Sweep> runs, oneThread;
+  SolverOptions one = options;
+  one.threads = 1;
   const StealMeter steal;
+  std::optional<ContendedCore> busy;
+  if (contended) busy.emplace();
   for (int r = 0; r < repeats; ++r) {
     runs.push_back(runSweep(mesh, params, options, keys, frames, label));
+    if (contended) oneThread.push_back(runSweep(mesh, params, one, keys, frames, label + ", one thread"));
     showStatus(label + ": yardstick");
     runs.back().referenceMsPerIter = yardstick.msPerIteration(referenceIterations);
   }
+  busy.reset();
   const Sweep& any = runs.front();
   nlohmann::json out = {{"vertices", mesh.vertexCount()},
                         {"keys", keys},
@@ -210,6 +227,14 @@ nlohmann::json benchCase(int vertices, int keys, int frames, int repeats, int th
                         {"reference_ms_per_iter", median(runs, [](const Sweep& s) { return s.referenceMsPerIter; })},
                         {"iter_vs_reference",
                          median(runs, [](const Sweep& s) { return s.msPerIter / s.referenceMsPerIter; })}};
+  out["threads_used"] = median(runs, [](const Sweep& s) { return s.threadsUsed; });
+  if (contended) {
+    const double single = median(oneThread, [](const Sweep& s) { return s.msPerFrame; });
+    out["contended"] = true;
+    out["one_thread_ms_per_frame"] = single;
+    out["one_thread_ms_per_iter"] = median(oneThread, [](const Sweep& s) { return s.msPerIter; });
+    out["vs_one_thread"] = out["ms_per_frame"].get<double>() / single;
+  }
   if (any.itersPerFrame == 0) {  // one key: every frame is the key itself, there is no iteration to time
     out["ms_per_iter"] = nullptr;
     out["iter_vs_reference"] = nullptr;
@@ -247,14 +272,15 @@ void run(const cli::Arguments& a, const BenchOutput& output) {
   const int repeats = a.integer("repeats", 3, 1, 100);
   const int threads = a.integer("threads", 0, 0, 1024);
   for (int vertices : sizes)
-    for (int keys : keyCounts) output.printLine(benchCase(vertices, keys, frames, repeats, threads, !a.flag("no-baseline")));
+    for (int keys : keyCounts)
+      output.printLine(benchCase(vertices, keys, frames, repeats, threads, !a.flag("no-baseline"), a.flag("contended")));
 }
 
 }  // namespace
 
 Benchmark interpBenchmark() {
   return {"interp", "the interpolation solver on strips built in code", kUsage,
-          {"sizes", "keys", "frames", "repeats", "threads"}, {"no-baseline"}, run};
+          {"sizes", "keys", "frames", "repeats", "threads"}, {"no-baseline", "contended"}, run};
 }
 
 }  // namespace ib

@@ -30,6 +30,7 @@ AnimationFrame plainFrame(const Eigen::VectorXd& weights, const InterpolationRes
   frame.plain = result.x;
   frame.heldPairs = result.heldPairs;
   frame.iterations = result.iterations;
+  frame.threads = result.threads;
   frame.converged = result.converged;
   frame.cancelled = result.cancelled;
   frame.milliseconds = result.milliseconds;
@@ -250,6 +251,7 @@ void FrameStream::State::addDynamics(AnimationFrame& frame) {
   frame.x = result.x;
   frame.heldPairs = result.heldPairs;
   frame.iterations += result.iterations;
+  frame.threads = result.threads;
   frame.converged = frame.converged && result.converged;
   frame.cancelled = result.cancelled;
   frame.deviation = deviation(frame.x, frame.plain);

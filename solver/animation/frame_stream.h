@@ -30,6 +30,7 @@ struct AnimationFrame {
   double deviation = 0;     // mass-weighted RMS of x - plain, in shape sizes
   std::vector<char> heldPairs;  // which cohesive pairs hold at x (InterpolationResult::heldPairs)
   int iterations = 0;       // solver iterations spent on this frame (plain and dynamic solves)
+  int threads = 1;          // threads its last solve ran on (fewer than asked while other work keeps cores busy)
   bool converged = true;    // every solve of this frame met the stopping rule
   bool cancelled = false;   // a solve was cancelled (FrameStream::setCancelFlag): x is not a frame of the animation
   double milliseconds = 0;  // wall time of this frame's solves

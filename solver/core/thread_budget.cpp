@@ -165,4 +165,10 @@ void TeamScope::update() { omp_set_num_threads(budget_.threads()); }
 
 int TeamScope::threads() const { return omp_get_max_threads(); }
 
+ThreadLimit::ThreadLimit(int threads) : previous_(omp_get_max_threads()) {
+  if (threads > 0) omp_set_num_threads(threads);
+}
+
+ThreadLimit::~ThreadLimit() { omp_set_num_threads(previous_); }
+
 }  // namespace ib

@@ -87,4 +87,18 @@ class TeamScope {
   int previous_;
 };
 
+// The most threads for the work of a scope on the calling thread (omp_set_num_threads), for an
+// option such as `--threads N`: budgets made inside take it as their limit. 0 leaves every core.
+// Restores the previous count when it goes out of scope.
+class ThreadLimit {
+ public:
+  explicit ThreadLimit(int threads);
+  ~ThreadLimit();
+  ThreadLimit(const ThreadLimit&) = delete;
+  ThreadLimit& operator=(const ThreadLimit&) = delete;
+
+ private:
+  int previous_;
+};
+
 }  // namespace ib

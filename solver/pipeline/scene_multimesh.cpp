@@ -2,6 +2,7 @@
 
 #include "comesh/comesh.h"
 #include "core/error.h"
+#include "core/thread_budget.h"
 #include "meshing/multimesh_builder.h"
 #include "meshing/stiffness_paint.h"
 #include "multimesh/mesh_quality.h"
@@ -223,6 +224,7 @@ SceneMultimesh sceneMultimesh(const Scene& scene, const SceneMultimeshOptions& o
     } catch (const InputError&) {  // a broken cache is rebuilt, not an error
     }
   }
+  const ThreadLimit threads(options.threads);
   SceneMultimesh out = build(scene, options, report);
   std::vector<std::string> notes = sceneNotes(scene);
   notes.insert(notes.end(), out.notes.begin(), out.notes.end());  // Comesh's, after the scene's

@@ -31,6 +31,9 @@ struct SceneMultimeshOptions {
   // Comesh Optimization's settings, read during the call; its progress callback is called too.
   // Default null: ComeshOptions' defaults.
   const ComeshOptions* comeshOptions = nullptr;
+  // When building: the most threads (untangling, Comesh); 0 = all cores. Fewer run while other
+  // programs keep cores busy (core/thread_budget.h). Default 0.
+  int threads = 0;
 };
 
 // Where the multimesh came from.
