@@ -3,6 +3,7 @@
 // here that exits 0 was silent. Reloading and saving drive the player's window in-process. Screenshots are read back and checked pixel by pixel against the
 // drawings, mapped through the player's own layout (canvasRect, ViewNavigation).
 #include "animation/frame_stream.h"
+#include "core/atomic_file.h"
 #include "core/png_image.h"
 #include "player/player_ui.h"
 #include "player/player_window.h"
@@ -19,6 +20,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <thread>
 #include <unistd.h>
@@ -39,11 +41,11 @@ Run inbetween(const std::string& args, const std::string& prefix = "") {
   return test::runCommand(prefix + " " + INBETWEEN_CLI + " " + args);
 }
 
-// A scripted run of `frames` frames of the square-arch-notch scene; returns its screenshot.
-RgbaImage screenshot(const std::string& name, const std::string& options, int frames = 1) {
+// A scripted run of `frames` frames of a scene (default square-arch-notch); returns its screenshot.
+RgbaImage screenshot(const std::string& name, const std::string& options, int frames = 1, const std::string& scene = kScene) {
   const std::string path = (fs::temp_directory_path() / ("inbetween-play-test-" + name + ".png")).string();
   fs::remove(path);
-  const Run run = inbetween("play " + kScene + " --frames " + std::to_string(frames) + " --screenshot " + path + " --size " +
+  const Run run = inbetween("play " + scene + " --frames " + std::to_string(frames) + " --screenshot " + path + " --size " +
                             std::to_string(kWidth) + "x" + std::to_string(kHeight) + " --device cpu --validation " + options);
   INFO(run.output);
   REQUIRE(run.code == 0);
@@ -144,6 +146,44 @@ TEST_CASE("play: --set tau changes the picture where a cut lets go", "[.window]"
   const RgbaImage plain = screenshot("tau-default", "", 21);
   const RgbaImage held = screenshot("tau-large", "--set tau=0.05", 21);
   CHECK(pictureDifference(plain, held) > 200);
+}
+
+TEST_CASE("play: --set tau=1e-9 plays a scene with the default tau, and its notch lets go sooner", "[.window]") {
+  // Frame 9: with the default tau (1e-3) the notch still holds; at 1e-9 it has let go.
+  const RgbaImage plain = screenshot("tau-default-9", "", 10);
+  const RgbaImage loose = screenshot("tau-1e-9", "--set tau=1e-9", 10);
+  CHECK(pictureDifference(plain, loose) > 50);
+}
+
+TEST_CASE("play: a scene with \"metric\": \"per_key\" plays as render draws it, and not as the shared metric would", "[.window]") {
+  // square-arch-stretch without dynamics, asking for the paper's per-key metric: its stretched
+  // inbetweens shrink, so the two metrics draw frame 8 differently.
+  const fs::path dir = fs::temp_directory_path() / "inbetween-play-test-per-key";
+  fs::remove_all(dir);
+  fs::copy(fs::path(INBETWEEN_ASSETS) / "square-arch-stretch", dir, fs::copy_options::recursive);
+  nlohmann::json scene = nlohmann::json::parse(readFile((dir / "scene.json").string()));
+  scene.erase("dynamics");
+  scene["solver"] = {{"metric", "per_key"}};
+  writeFileAtomically((dir / "scene.json").string(), scene.dump(2));
+  const std::string file = (dir / "scene.json").string();
+  constexpr int kFrame = 8;
+  const auto rendered = [&](const std::string& options) {
+    const fs::path out = dir / ("render" + options.substr(options.find('=') + 1));
+    const Run run = inbetween("render " + file + " -o " + out.string() + " --frames " + std::to_string(kFrame) + " --device cpu " +
+                              options);
+    INFO(run.output);
+    REQUIRE(run.code == 0);
+    return readPng((out / ("frame_000" + std::to_string(kFrame) + ".png")).string());
+  };
+  const RgbaImage perKey = rendered("--set metric=per_key"), shared = rendered("--set metric=shared");
+  const RgbaImage shot = screenshot("per-key", "", kFrame + 1, file);
+  int compared = 0, comparedShared = 0;
+  const int off = mismatches(shot, perKey, 8, &compared), offShared = mismatches(shot, shared, 8, &comparedShared);
+  INFO(off << " of " << compared << " samples off the per-key render, " << offShared << " of " << comparedShared
+           << " off the shared one");
+  CHECK(compared > 4000);
+  CHECK(off <= compared / 1000);
+  CHECK(offShared > 100);  // the two metrics differ here, so the comparison tells them apart
 }
 
 TEST_CASE("play: a scene that fails to load exits 2 with its message", "[.window]") {
