@@ -21,7 +21,7 @@ packages=(
 engine_packages=(
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers glslang-tools
   libglfw3-dev libglm-dev libimgui-dev
-  xvfb xauth
+  xvfb xauth xdotool  # xdotool: real input events for the window tests
   chromium
 )
 [ "${INBETWEEN_ENGINE:-ON}" = "OFF" ] || packages+=("${engine_packages[@]}")

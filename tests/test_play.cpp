@@ -12,6 +12,7 @@
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
+#include <atomic>
 #include <catch2/catch.hpp>
 #include <chrono>
 #include <cmath>
@@ -319,6 +320,79 @@ TEST_CASE("play: Save parameters writes the tuned values into the scene, which t
   // of the stream came 5.8e-6 px apart (seen once in five runs).
   CHECK((fromSaved - frameOf(original, tunedParams)).cwiseAbs().maxCoeff() < 1e-3);
   CHECK((fromSaved - frameOf(original, original.interpolation)).cwiseAbs().maxCoeff() > 5.0);
+}
+
+namespace {
+
+// `xdotool ARGS` against the X display the test runs on; its output without the final newline.
+std::string xdotool(const std::string& args) {
+  std::string out = test::runCommand("xdotool " + args).output;
+  while (!out.empty() && (out.back() == '\n' || out.back() == ' ')) out.pop_back();
+  return out;
+}
+
+// Repeats `act` until `done` holds (true), at most `attempts` times, `done` polled for up to 5 s
+// after each: the window takes input once its first frames are drawn, which nothing announces.
+bool actUntil(const std::function<void()>& act, const std::function<bool()>& done, int attempts) {
+  for (int a = 0; a < attempts; ++a) {
+    act();
+    for (int k = 0; k < 50; ++k) {
+      if (done()) return true;
+      std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
+TEST_CASE("play: in the window, with real input, a typed slider value and a picked choice are saved by Ctrl+S as one line",
+          "[.window]") {
+  const fs::path dir = sceneCopy("real-input");
+  const std::string file = (dir / "scene.json").string();
+  const std::string original = readFile(file);
+  Run run;
+  std::atomic<bool> ended{false};
+  std::thread player([&] {
+    run = inbetween("play " + file + " --size 960x600 --device cpu");
+    ended = true;
+  });
+  std::string window;
+  for (int k = 0; k < 300 && window.empty(); ++k) {  // up to a minute: the scene is meshed first
+    window = xdotool("search --name \"inbetween play - " + file + "\"");
+    if (window.empty()) std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  }
+  REQUIRE_FALSE(window.empty());
+  // The Parameters tab (the side panel's first) in a 960 x 600 window: tau's slider on the
+  // second row, the metric's list on the fifth. A double-click types a value; Enter sets it.
+  const bool typed = actUntil(
+      [&] {
+        xdotool("mousemove --window " + window + " 730 102 click --repeat 2 --delay 80 1");
+        xdotool("type --delay 40 1e-9");
+        xdotool("key Return");
+        xdotool("key ctrl+s");
+      },
+      [&] { return readFile(file).find("\"tau\": 1e-09") != std::string::npos; }, 5);
+  CHECK(typed);
+  const bool picked = actUntil(
+      [&] {
+        xdotool("mousemove --window " + window + " 700 174 click 1");
+        xdotool("sleep 0.5 mousemove --window " + window + " 660 217 click 1");
+        xdotool("key ctrl+s");
+      },
+      [&] { return readFile(file).find("\"per_key\"") != std::string::npos; }, 5);
+  CHECK(picked);
+  xdotool("key Escape");  // to the focused window: GLFW ignores events sent to a window by id
+  const bool closed = actUntil([] {}, [&] { return ended.load(); }, 6);
+  if (!closed) test::runCommand("pkill -f \"inbetween play " + file + "\"");  // so that the test ends
+  player.join();
+  CHECK(closed);
+  INFO(run.output);
+  CHECK(run.code == 0);
+  // Everything the file said stays as it was written; the two values come as one new line.
+  const size_t end = original.rfind('}');
+  CHECK(readFile(file) == original.substr(0, end - 1) + ",\n  \"solver\": {\"tau\": 1e-09, \"metric\": \"per_key\"}\n}" +
+                              original.substr(end + 1));
 }
 
 TEST_CASE("play: the keyboard shortcuts drive the transport, weights mode, the overlays and closing", "[.window]") {
