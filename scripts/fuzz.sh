@@ -2,7 +2,7 @@
 # Builds the libFuzzer targets (clang, AddressSanitizer + UndefinedBehaviorSanitizer) and runs each
 # for a bounded time from seed corpora made from the bundled examples. Usage:
 #   scripts/fuzz.sh [SECONDS_PER_TARGET] [BUILD_DIR] [TARGET...]
-# (default 60 s, build-fuzz, every target: scene png_tracing multimesh gltf_writer). CI runs it
+# (default 60 s, build-fuzz, every target: scene scene_document png_tracing multimesh gltf_writer). CI runs it
 # with a short time; run it longer by hand. The corpora grow in BUILD_DIR/fuzz-corpus/TARGET and
 # are kept from run to run. An input that crashes a target, trips a sanitizer or throws what the
 # target does not expect is saved as BUILD_DIR/fuzz-artifacts/TARGET/crash-*: the script then
@@ -14,7 +14,7 @@ seconds=${1:-60}
 build=${2:-"$here/build-fuzz"}
 shift $(( $# > 2 ? 2 : $# ))
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(scene png_tracing multimesh gltf_writer)
+[ ${#targets[@]} -gt 0 ] || targets=(scene scene_document png_tracing multimesh gltf_writer)
 
 INBETWEEN_SETUP_ONLY=1 "$here/scripts/setup.sh"
 cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=clang++-14 -DINBETWEEN_ENGINE=OFF \

@@ -94,7 +94,12 @@ void SceneDocument::setFromText(const std::string& assignment) {
 
 void SceneDocument::apply(const edit::SceneEdit& change) {
   Json edited = state_->root;
-  applyEdit(edited, change);
+  try {
+    applyEdit(edited, change);
+  } catch (const nlohmann::json::exception& e) {  // a part of the file is not of the type the edit needs
+    throw InputError(state_->path + ": cannot " + edit::describe(change) + ": the file's JSON is not as a scene's (" + e.what() +
+                     "); fix the file first");
+  }
   if (edited == state_->root) return;
   state_->undo.push_back({std::move(state_->root), edit::describe(change)});
   state_->redo.clear();

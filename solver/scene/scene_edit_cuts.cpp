@@ -65,7 +65,7 @@ Json& painted(Json& root, const std::string& name) {
     Json& items = stiffnessList(root, list);
     const int at = indexNamed(items, name);
     if (at >= 0) return items[static_cast<size_t>(at)];
-    for (const Json& item : items) names.push_back(item.value("name", ""));
+    for (const Json& item : items) names.push_back(textOf(item, "name"));
   }
   notFound("stiffness region or stroke", name, names);
 }
@@ -123,7 +123,7 @@ void scaleStiffness(Json& root, double factor) {
     if (stiffness.contains(list) && stiffness[list].is_array())
       for (Json& item : stiffness[list])
         if (item.is_object() && item.contains("kappa"))
-          item["kappa"] = scaledKappa(item["kappa"], factor, std::string("stiffness: ") + list + ": " + q(item.value("name", "")) + ": kappa");
+          item["kappa"] = scaledKappa(item["kappa"], factor, std::string("stiffness: ") + list + ": " + q(textOf(item, "name")) + ": kappa");
 }
 
 }  // namespace
@@ -145,7 +145,7 @@ void applyCutEdit(Json& root, const SceneEdit& edit) {
           [&](const RemoveCut& e) {
             int removed = 0;
             for (Json& k : keys(root)) {
-              if (!e.key.empty() && k.value("name", "") != e.key) continue;
+              if (!e.key.empty() && textOf(k, "name") != e.key) continue;
               if (k.contains("cuts") && k["cuts"].is_array()) {
                 const int at = indexNamed(k["cuts"], e.name);
                 if (at >= 0) k["cuts"].erase(static_cast<size_t>(at)), ++removed;

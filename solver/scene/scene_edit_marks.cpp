@@ -26,7 +26,7 @@ Json& marks(Json& root) {
   if (timeline.contains("marks") && timeline["marks"].is_array()) return timeline["marks"];
   const std::vector<std::string> names = keyNames(root);
   const int m = static_cast<int>(names.size());
-  const bool loop = timeline.value("loop", false);
+  const bool loop = flagOf(timeline, "loop", false);
   Json list = Json::array();
   const int count = m == 0 ? 0 : std::max(m, 2) + (loop && m > 1 ? 1 : 0);
   for (int k = 0; k < count; ++k) {

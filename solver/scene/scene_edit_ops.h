@@ -31,7 +31,12 @@ struct Overloaded : F... {
 template <class... F>
 Overloaded(F...) -> Overloaded<F...>;
 
-// Helpers shared by the groups.
+// Helpers shared by the groups. They read a document that may be malformed (it is validated only
+// after an edit): a field of the wrong type reads as absent.
+// The string field `field` of `j` (an object), or "" when it is absent or not a string.
+std::string textOf(const Json& j, const char* field);
+// The boolean field `field` of `j`, or `fallback`.
+bool flagOf(const Json& j, const char* field, bool fallback);
 inline std::string q(const std::string& name) { return "\"" + name + "\""; }  // a name in quotes
 Json& keys(Json& root);                                    // the "keys" array (InputError when missing)
 std::vector<std::string> keyNames(const Json& root);

@@ -48,7 +48,7 @@ void renameKeyUses(Json& root, const std::string& from, const std::string& to) {
   }
   if (!root.contains("stiffness") || !root["stiffness"].is_object()) return;
   Json& stiffness = root["stiffness"];
-  if (stiffness.contains("image") && stiffness["image"].is_object() && stiffness["image"].value("key", "") == from) {
+  if (stiffness.contains("image") && stiffness["image"].is_object() && textOf(stiffness["image"], "key") == from) {
     if (to.empty()) stiffness.erase("image");
     else stiffness["image"]["key"] = to;
   }
@@ -56,7 +56,7 @@ void renameKeyUses(Json& root, const std::string& from, const std::string& to) {
     if (!stiffness.contains(list) || !stiffness[list].is_array()) continue;
     Json& items = stiffness[list];
     for (size_t i = items.size(); i-- > 0;)
-      if (items[i].is_object() && items[i].value("key", "") == from) {
+      if (items[i].is_object() && textOf(items[i], "key") == from) {
         if (to.empty()) items.erase(i);
         else items[i]["key"] = to;
       }
@@ -70,7 +70,7 @@ void removeNamed(Json& root, const std::string& field, const std::string& what, 
   int removed = 0;
   std::vector<std::string> known;
   for (Json& k : keys(root)) {
-    if (!keyName.empty() && k.value("name", "") != keyName) continue;
+    if (!keyName.empty() && textOf(k, "name") != keyName) continue;
     if (!k.contains(field) || !k[field].is_object()) continue;
     for (auto it = k[field].begin(); it != k[field].end(); ++it) known.push_back(it.key());
     removed += static_cast<int>(k[field].erase(name));
@@ -90,7 +90,7 @@ void renameNamed(Json& root, const std::string& field, const std::string& what, 
     for (auto it = object.begin(); it != object.end(); ++it) known.push_back(it.key());
     if (!object.contains(from)) continue;
     if (object.contains(to))
-      throw InputError("key " + q(k.value("name", "")) + " already has " + what + " " + q(to) + ": choose another name");
+      throw InputError("key " + q(textOf(k, "name")) + " already has " + what + " " + q(to) + ": choose another name");
     renameMember(object, from, to);
     ++renamed;
   }
@@ -98,6 +98,16 @@ void renameNamed(Json& root, const std::string& field, const std::string& what, 
 }
 
 }  // namespace
+
+std::string textOf(const Json& j, const char* field) {
+  if (!j.is_object() || !j.contains(field) || !j[field].is_string()) return "";
+  return j[field].get<std::string>();
+}
+
+bool flagOf(const Json& j, const char* field, bool fallback) {
+  if (!j.is_object() || !j.contains(field) || !j[field].is_boolean()) return fallback;
+  return j[field].get<bool>();
+}
 
 Json& keys(Json& root) {
   if (!root.contains("keys") || !root["keys"].is_array()) root["keys"] = Json::array();
@@ -114,7 +124,7 @@ std::vector<std::string> keyNames(const Json& root) {
 
 Json& key(Json& root, const std::string& name) {
   for (Json& k : keys(root))
-    if (k.is_object() && k.value("name", "") == name) return k;
+    if (k.is_object() && textOf(k, "name") == name) return k;
   notFound("key", name, keyNames(root));
 }
 
@@ -141,7 +151,7 @@ void checkName(const std::string& name, const std::string& what, bool noDot) {
 
 int indexNamed(const Json& array, const std::string& name) {
   for (size_t i = 0; i < array.size(); ++i)
-    if (array[i].is_object() && array[i].value("name", "") == name) return static_cast<int>(i);
+    if (array[i].is_object() && textOf(array[i], "name") == name) return static_cast<int>(i);
   return -1;
 }
 

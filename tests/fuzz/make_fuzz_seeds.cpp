@@ -1,6 +1,6 @@
 // Writes the fuzz targets' seed corpora from the bundled examples:
 //   make_fuzz_seeds ASSETS_DIR OUT_DIR
-// OUT_DIR/scene/: every scene.json; OUT_DIR/png_tracing/: every drawing scaled down to at most
+// OUT_DIR/scene/ and OUT_DIR/scene_document/: every scene.json; OUT_DIR/png_tracing/: every drawing scaled down to at most
 // 96 px on its long side (nearest pixel, so line work and alpha stay crisp); OUT_DIR/multimesh/:
 // the initial multimesh of every scene whose file stays under 64 KiB, behind the target's mode
 // byte (0: the checksum as stored); OUT_DIR/gltf_writer/: a few fixed byte strings.
@@ -56,7 +56,9 @@ int main(int argc, char** argv) {
   for (const fs::path& folder : folders) {
     const std::string name = folder.filename().string();
     std::ifstream in(folder / "scene.json", std::ios::binary);
-    write(out / "scene" / (name + ".json"), std::string(std::istreambuf_iterator<char>(in), {}));
+    const std::string sceneText(std::istreambuf_iterator<char>(in), {});
+    write(out / "scene" / (name + ".json"), sceneText);
+    write(out / "scene_document" / (name + ".json"), sceneText);
     ++scenes;
     try {
       const ib::Scene scene = ib::loadScene((folder / "scene.json").string());
