@@ -234,6 +234,9 @@ int Scene::keyIndex(const std::string& name) const {
 
 Scene parseScene(const std::string& source, const std::string& path) {
   const Context at{std::filesystem::path(path).filename().string(), ""};
+  // nlohmann's parser ends the text at a NUL byte; JSON text holds none, so neither does a scene.
+  if (const size_t nul = source.find('\0'); nul != std::string::npos)
+    throw at.error("malformed JSON: a NUL byte at offset " + std::to_string(nul) + " (a scene file is text)");
   json j;
   try {
     j = json::parse(source);

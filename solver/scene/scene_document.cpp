@@ -55,7 +55,7 @@ SceneDocument SceneDocument::fromText(const std::string& text, const std::string
   state->path = path;
   state->original = text;
   state->root = Json::parse(text, nullptr, false);
-  if (state->root.is_discarded() || !state->root.is_object()) {
+  if (state->root.is_discarded() || !state->root.is_object() || text.find('\0') != std::string::npos) {
     // The loader's own message says what is wrong (malformed JSON, a number too large).
     parseScene(text, path);
     throw InputError(path + ": must be a JSON object (a scene: docs/scene-format.md)");
