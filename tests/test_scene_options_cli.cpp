@@ -112,7 +112,7 @@ TEST_CASE("cli: mesh refuses a mesh past max_vertices with exit code 2, before a
   CHECK_FALSE(fs::exists(fs::path(scene).parent_path() / "scene.ibmesh"));
 }
 
-TEST_CASE("cli: render samples pixel art nearest by default (auto) and as the scene says; --sampling overrides") {
+TEST_CASE("cli: render samples pixel art nearest by default (auto) and as the scene says, and --sampling overrides it") {
   const double automatic = paletteShare(renderFrame0(slimeScene("render-auto")));
   const double linear = paletteShare(renderFrame0(slimeScene("render-linear", "\"sampling\": \"linear\", ")));
   const double overridden =
@@ -126,7 +126,7 @@ TEST_CASE("cli: render samples pixel art nearest by default (auto) and as the sc
   CHECK(forcedLinear < 0.9);
 }
 
-TEST_CASE("cli: export writes the scene's sampling as the glTF sampler's filters; --sampling overrides") {
+TEST_CASE("cli: export writes the scene's sampling as the glTF sampler's filters, and --sampling overrides them") {
   CHECK(exportedFilters(slimeScene("export-auto")) == std::make_pair(kNearest, kNearestMipmapNearest));
   CHECK(exportedFilters(slimeScene("export-nearest", "\"sampling\": \"nearest\", ")) ==
         std::make_pair(kNearest, kNearestMipmapNearest));

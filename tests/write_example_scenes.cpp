@@ -1,5 +1,6 @@
 // Writes the example scenes (and, with --bad, the bad ones) into a folder:
-// write_example_scenes FOLDER [--bad]. Used for assets/ and by the command-line tests.
+// write_example_scenes FOLDER [--bad]. Used for assets/; the command-line tests write them
+// themselves (tests/cli_support.h).
 #include "testkit/example_scenes.h"
 
 #include <cstdio>
