@@ -60,7 +60,7 @@ TEST_CASE("cutSides: gaps under `glued` target pixels are welded, gaps of `open`
   CHECK_THROWS_AS(weldCuts(glued, cutSides, 0.0, options), std::invalid_argument);
 }
 
-TEST_CASE("cutSides: a pair the solver says holds is welded shut at any gap; the others follow the pixel rule") {
+TEST_CASE("cutSides: a pair the solver says holds is welded shut at any gap, the others follow the pixel rule") {
   // Just before a stretched cut lets go its held pairs open by a pixel or more at the picture's
   // scale: with the solver's flags they stay shut, without them they would show as a speck.
   const CutSquare cut = cutSquare();

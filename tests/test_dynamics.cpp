@@ -154,7 +154,7 @@ TEST_CASE("dynamics: a frame at a given time is the streamed frame, exactly with
   CHECK_THROWS_AS(plain.next(), std::out_of_range);
 }
 
-TEST_CASE("dynamics: out-of-range parameters are input errors naming the field; a timeline for other keys is the caller's error") {
+TEST_CASE("dynamics: out-of-range parameters are input errors naming the field, a timeline for other keys is the caller's error") {
   const auto f = test::strip(100, 2);
   const Timeline t = keyTimeline({{0, 0}, {1, 1}}, 2, "linear");
   const auto message = [&](DynamicsParams d, const Timeline& timeline) -> std::string {

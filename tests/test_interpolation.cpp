@@ -237,7 +237,7 @@ TEST_CASE("interpolation: on a mesh large enough for several threads, 2 threads 
   CHECK((key.x - f.mesh.keyPositions(1)).cwiseAbs().maxCoeff() <= 1e-6 * f.size);
 }
 
-TEST_CASE("interpolation: under the shared metric a strip stretched 4x is 2.5x long halfway; the paper's metric shrinks it") {
+TEST_CASE("interpolation: under the shared metric a strip stretched 4x is 2.5x long halfway, the paper's metric shrinks it") {
   // ../shared/shape-averaging.md: stretching by k in one direction, the paper's per-key metric
   // averages lengths harmonically (1.6 at k = 4, halfway), a metric shared by the keys
   // arithmetically (2.5).

@@ -179,7 +179,7 @@ TEST_CASE("shared boundary: an extra piece names its key, where it is, its area 
   CHECK(both.find("; and key \"a\" has a hole that key \"b\" does not") != std::string::npos);
 }
 
-TEST_CASE("shared boundary: holes that fit as well either way round ask for features; holes that moved a little match") {
+TEST_CASE("shared boundary: holes that fit as well either way round ask for features, holes that moved a little match") {
   const ShapeLoop square = plain(squareOutline().outer);
   const std::string turned = mismatchOf({square, hole(20, 40, 20), hole(60, 40, 20)}, {square, hole(40, 20, 20), hole(40, 60, 20)});
   INFO(turned);

@@ -55,7 +55,7 @@ TEST_CASE("multimesh: a degenerate or inverted rest triangle names the triangle 
   REQUIRE_THROWS_WITH(mesh.validate(), Catch::Contains("triangle 0") && Catch::Contains("key 1"));
 }
 
-TEST_CASE("multimesh: a wrong position count is a caller's error; bad indices and non-finite values are input errors") {
+TEST_CASE("multimesh: a wrong position count is a caller's error, bad indices and non-finite values are input errors") {
   Multimesh mesh = unitSquare();
   REQUIRE_THROWS_AS(mesh.addKey(Eigen::MatrixX2d::Zero(3, 2), {}, {}), std::invalid_argument);
   REQUIRE_THROWS_AS(mesh.setStiffness(2, 1.0), std::invalid_argument);

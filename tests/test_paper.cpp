@@ -107,7 +107,7 @@ int fringePixels(const RgbaImage& image) {
 
 }  // namespace
 
-TEST_CASE("paper: white regions the drawing encloses are part of the shape; the paper round it is not") {
+TEST_CASE("paper: white regions the drawing encloses are part of the shape, the paper round it is not") {
   const RgbaImage drawing = onPaper(128, 128, character);
   const auto outlines = trace(drawing, {});
   REQUIRE(outlines.size() == 1);

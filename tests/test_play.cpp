@@ -239,7 +239,7 @@ bool hasMessage(play::PlayerSession& session, bool error) {
 
 }  // namespace
 
-TEST_CASE("play: a drawing edited on disk is picked up while playing; a broken scene file keeps the last good one, "
+TEST_CASE("play: a drawing edited on disk is picked up while playing, a broken scene file keeps the last good one, "
           "its error shown", "[.window]") {
   const fs::path dir = sceneCopy("reload");
   play::PlayerSession session(std::make_unique<play::SceneReloader>((dir / "scene.json").string()), {});

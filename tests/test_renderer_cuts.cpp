@@ -11,7 +11,7 @@ using namespace ib;
 using namespace ib::render;
 using namespace ib::test;
 
-TEST_CASE("renderer: a glued cut shows no seam where another key draws it open; an open cut stays open") {
+TEST_CASE("renderer: a glued cut shows no seam where another key draws it open, an open cut stays open") {
   const vk::VulkanContext context = test::validatedContext();
   const CutSquare cut = cutSquare();
   OffscreenOptions target;

@@ -167,7 +167,7 @@ TEST_CASE("scene: a dotted plain feature says dots are reserved for cut features
                             "\"split-lip\"") != std::string::npos);
 }
 
-TEST_CASE("scene: a one-key scene loads with a note that the animation is a still; two keys give no note") {
+TEST_CASE("scene: a one-key scene loads with a note that the animation is a still, two keys give no note") {
   json j = squareArch();
   CHECK(parseScene(j.dump(), "scenes/square-arch.json").notes.empty());
   j["keys"].erase(1);

@@ -137,7 +137,7 @@ TEST_CASE("cli: export writes the scene's sampling as the glTF sampler's filters
   CHECK(exportedFilters(drawn) == std::make_pair(kLinear, kLinearMipmapLinear));
 }
 
-TEST_CASE("play: the View panel starts from the scene's sampling; --sampling overrides it", "[.window]") {
+TEST_CASE("play: the View panel starts from the scene's sampling, --sampling overrides it", "[.window]") {
   const auto opened = [](const std::string& scene, std::optional<render::Sampling> option) {
     play::PlayerSession session(std::make_unique<play::SceneReloader>(scene), {});
     play::PlayerWindowOptions options;

@@ -169,7 +169,7 @@ TEST_CASE("scene reloader: reloadNow rebuilds unconditionally, and a second requ
   CHECK_FALSE(reloader.takeReloaded());  // the later build replaced the earlier one untaken
 }
 
-TEST_CASE("scene reloader: saved parameters reload the scene keeping its multimesh; a new kappa rebuilds it") {
+TEST_CASE("scene reloader: saved parameters reload the scene keeping its multimesh, a new kappa rebuilds it") {
   const std::string file = writtenScene("reloader-saved");
   SceneReloader reloader(file);
   const std::shared_ptr<const Multimesh> before = reloader.current().mesh;
@@ -190,7 +190,7 @@ TEST_CASE("scene reloader: saved parameters reload the scene keeping its multime
   CHECK(reloader.current().scene.kappa == 2);
 }
 
-TEST_CASE("scene reloader: open loads another scene in the background; a failed open keeps the current one") {
+TEST_CASE("scene reloader: open loads another scene in the background, a failed open keeps the current one") {
   const std::string file = writtenScene("reloader-open");
   const std::string other = writtenScene("reloader-open-other");
   SceneReloader reloader(file);

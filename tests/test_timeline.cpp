@@ -126,7 +126,7 @@ TEST_CASE("timeline: a blend segment brings in a key neither end has, and keeps 
   CHECK(t.weights(4.0)(2) > 0.25);
 }
 
-TEST_CASE("timeline: frames fall at start + f / fps; a loop stops before the pose that repeats its start") {
+TEST_CASE("timeline: frames fall at start + f / fps, a loop stops before the pose that repeats its start") {
   const Timeline t = everySegmentKind();
   CHECK(t.frameCount() == 4 * 24 + 12 + 1);
   CHECK(t.frameTime(24) == 1.0);

@@ -72,7 +72,7 @@ TEST_CASE("tracing: a ring has one hole, oriented against its outer loop") {
   CHECK(circleDeviation(outlines[0].holes[0], {64, 64}, 20) < 0.75);
 }
 
-TEST_CASE("tracing: separate pieces and an island in a hole are components; specks are dropped") {
+TEST_CASE("tracing: separate pieces and an island in a hole are components, specks are dropped") {
   const auto ring = test::subtract(test::disc(60, 60, 50), test::disc(60, 60, 30));
   const auto island = test::disc(60, 60, 12);
   const auto other = test::box(130, 20, 180, 60);

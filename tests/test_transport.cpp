@@ -134,7 +134,7 @@ TEST_CASE("transport: stepping pauses and wraps within the range when looping, c
   CHECK(t.frame() == 10);
 }
 
-TEST_CASE("transport: goTo clamps to the timeline and keeps playing; toStart and toEnd go to the range's points") {
+TEST_CASE("transport: goTo clamps to the timeline and keeps playing, toStart and toEnd go to the range's points") {
   Transport t(60, 24);
   t.setRange(40, 20);  // swapped into order
   CHECK(t.in() == 20);
