@@ -1,18 +1,16 @@
 // `inbetween play` scripted under Xvfb (ctest runs this program through xvfb-run), on lavapipe
 // with the validation layer: the command fails (exit 1) on any validation message, so every run
-// here that exits 0 was silent. Reloading and saving drive the player's window in-process. Screenshots are read back and checked pixel by pixel against the
-// drawings, mapped through the player's own layout (canvasRect, ViewNavigation).
-#include "animation/frame_stream.h"
-#include "core/atomic_file.h"
+// here that exits 0 was silent. Reloading drives the player's window in-process. Screenshots are
+// read back and checked pixel by pixel against the drawings, mapped through the player's own
+// layout (canvasRect, ViewNavigation). The parameter controls: test_play_controls.cpp.
 #include "core/png_image.h"
+#include "play_fixtures.h"
 #include "player/player_ui.h"
 #include "player/player_window.h"
 #include "player/shortcuts.h"
-#include "testkit/command_run.h"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
-#include <atomic>
 #include <catch2/catch.hpp>
 #include <chrono>
 #include <cmath>
@@ -21,97 +19,14 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
-#include <nlohmann/json.hpp>
 #include <string>
 #include <thread>
 #include <unistd.h>
 
 using namespace ib;
-
-namespace {
-
+using namespace playtest;
 namespace fs = std::filesystem;
-
-constexpr int kWidth = 960, kHeight = 600;
-const std::string kScene = std::string(INBETWEEN_ASSETS) + "/square-arch-notch/scene.json";
-
 using Run = test::CommandRun;
-
-// Runs `inbetween ARGS` (prefix: words before the command, e.g. env -u DISPLAY).
-Run inbetween(const std::string& args, const std::string& prefix = "") {
-  return test::runCommand(prefix + " " + INBETWEEN_CLI + " " + args);
-}
-
-// A scripted run of `frames` frames of a scene (default square-arch-notch); returns its screenshot.
-RgbaImage screenshot(const std::string& name, const std::string& options, int frames = 1, const std::string& scene = kScene) {
-  const std::string path = (fs::temp_directory_path() / ("inbetween-play-test-" + name + ".png")).string();
-  fs::remove(path);
-  const Run run = inbetween("play " + scene + " --frames " + std::to_string(frames) + " --screenshot " + path + " --size " +
-                            std::to_string(kWidth) + "x" + std::to_string(kHeight) + " --device cpu --validation " + options);
-  INFO(run.output);
-  REQUIRE(run.code == 0);
-  const RgbaImage image = readPng(path);
-  REQUIRE(image.width == kWidth);
-  REQUIRE(image.height == kHeight);
-  return image;
-}
-
-RgbaImage drawing(const std::string& name) { return readPng(std::string(INBETWEEN_ASSETS) + "/square-arch-notch/" + name); }
-
-// Where the readouts panel (play::readoutsPanel) and an error banner (play::messageBanner) sit
-// over the picture: their samples are skipped.
-bool underPanels(double x, double y) { return (x < 330 && y < 230) || y < 140; }
-
-// Compares the screenshot with `art` (a key's drawing, 128 x 128 like the scene's canvas) at every
-// drawing pixel whose 7 x 7 neighbourhood is one colour (shape interiors and the paper away from
-// outlines, which move by a fraction of a pixel between a key and the solve at its weights).
-// Returns how many of those samples are off by more than `tolerance` /255 in a channel; opaque
-// texels are compared to their colour, transparent ones to the backdrop's grey.
-int mismatches(const RgbaImage& shot, const RgbaImage& art, int tolerance, int* compared) {
-  const play::PixelRect canvas = play::canvasRect(kWidth, kHeight);
-  const render::ViewBox view = play::ViewNavigation().windowView({0, 0, double(art.width), double(art.height)}, canvas, kWidth, kHeight);
-  const uint8_t backdrop = static_cast<uint8_t>(play::ViewSettings().backdrop.colour[0] * 255 + 0.5);
-  int bad = 0;
-  *compared = 0;
-  for (int y = 3; y < art.height - 3; ++y)
-    for (int x = 3; x < art.width - 3; ++x) {
-      bool uniform = true;
-      for (int dy = -3; dy <= 3 && uniform; ++dy)
-        for (int dx = -3; dx <= 3 && uniform; ++dx)
-          for (int c = 0; c < 4; ++c) uniform = uniform && art.at(x + dx, y + dy)[c] == art.at(x, y)[c];
-      if (!uniform || (art.at(x, y)[3] != 0 && art.at(x, y)[3] != 255)) continue;
-      const Eigen::Vector2d p = play::toWindow(view, kWidth, kHeight, {x + 0.5, y + 0.5});
-      if (underPanels(p.x(), p.y())) continue;
-      const uint8_t* got = shot.at(static_cast<int>(p.x()), static_cast<int>(p.y()));
-      ++*compared;
-      for (int c = 0; c < 3; ++c) {
-        const int want = art.at(x, y)[3] == 255 ? art.at(x, y)[c] : backdrop;
-        if (std::abs(int(got[c]) - want) > tolerance) {
-          ++bad;
-          break;
-        }
-      }
-    }
-  return bad;
-}
-
-// Pixels of the picture (the canvas outside the readouts) that differ by more than 32/255.
-int pictureDifference(const RgbaImage& a, const RgbaImage& b) {
-  const play::PixelRect canvas = play::canvasRect(kWidth, kHeight);
-  int differ = 0;
-  for (int y = 0; y < static_cast<int>(canvas.y1); ++y)
-    for (int x = 0; x < static_cast<int>(canvas.x1); ++x) {
-      if (underPanels(x, y)) continue;
-      for (int c = 0; c < 3; ++c)
-        if (std::abs(int(a.at(x, y)[c]) - int(b.at(x, y)[c])) > 32) {
-          ++differ;
-          break;
-        }
-    }
-  return differ;
-}
-
-}  // namespace
 
 TEST_CASE("play: the scripted screenshot shows the first key's artwork in the fitted drawing area and the UI's panels",
           "[.window]") {
@@ -142,51 +57,6 @@ TEST_CASE("play: --weights at e_i shows key i's drawing, and a blend shows neith
   CHECK(pictureDifference(blend, arch) > 500);
 }
 
-TEST_CASE("play: --set tau changes the picture where a cut lets go", "[.window]") {
-  // Frame 20 of the timeline: the notch has opened with the scene's tau; a large tau keeps it shut.
-  const RgbaImage plain = screenshot("tau-default", "", 21);
-  const RgbaImage held = screenshot("tau-large", "--set tau=0.05", 21);
-  CHECK(pictureDifference(plain, held) > 200);
-}
-
-TEST_CASE("play: --set tau=1e-9 plays a scene with the default tau, and its notch lets go sooner", "[.window]") {
-  // Frame 9: with the default tau (1e-3) the notch still holds; at 1e-9 it has let go.
-  const RgbaImage plain = screenshot("tau-default-9", "", 10);
-  const RgbaImage loose = screenshot("tau-1e-9", "--set tau=1e-9", 10);
-  CHECK(pictureDifference(plain, loose) > 50);
-}
-
-TEST_CASE("play: a scene with \"metric\": \"per_key\" plays as render draws it, and not as the shared metric would", "[.window]") {
-  // square-arch-stretch without dynamics, asking for the paper's per-key metric: its stretched
-  // inbetweens shrink, so the two metrics draw frame 8 differently.
-  const fs::path dir = fs::temp_directory_path() / "inbetween-play-test-per-key";
-  fs::remove_all(dir);
-  fs::copy(fs::path(INBETWEEN_ASSETS) / "square-arch-stretch", dir, fs::copy_options::recursive);
-  nlohmann::json scene = nlohmann::json::parse(readFile((dir / "scene.json").string()));
-  scene.erase("dynamics");
-  scene["solver"] = {{"metric", "per_key"}};
-  writeFileAtomically((dir / "scene.json").string(), scene.dump(2));
-  const std::string file = (dir / "scene.json").string();
-  constexpr int kFrame = 8;
-  const auto rendered = [&](const std::string& options) {
-    const fs::path out = dir / ("render" + options.substr(options.find('=') + 1));
-    const Run run = inbetween("render " + file + " -o " + out.string() + " --frames " + std::to_string(kFrame) + " --device cpu " +
-                              options);
-    INFO(run.output);
-    REQUIRE(run.code == 0);
-    return readPng((out / ("frame_000" + std::to_string(kFrame) + ".png")).string());
-  };
-  const RgbaImage perKey = rendered("--set metric=per_key"), shared = rendered("--set metric=shared");
-  const RgbaImage shot = screenshot("per-key", "", kFrame + 1, file);
-  int compared = 0, comparedShared = 0;
-  const int off = mismatches(shot, perKey, 8, &compared), offShared = mismatches(shot, shared, 8, &comparedShared);
-  INFO(off << " of " << compared << " samples off the per-key render, " << offShared << " of " << comparedShared
-           << " off the shared one");
-  CHECK(compared > 4000);
-  CHECK(off <= compared / 1000);
-  CHECK(offShared > 100);  // the two metrics differ here, so the comparison tells them apart
-}
-
 TEST_CASE("play: a scene that fails to load exits 2 with its message", "[.window]") {
   const Run run = inbetween("play " + std::string(INBETWEEN_ASSETS) + "/no-such-scene/scene.json --frames 1 --device cpu");
   INFO(run.output);
@@ -210,34 +80,6 @@ TEST_CASE("play: without a display exits 2 and says so", "[.window]") {
   CHECK_THAT(run.output, Catch::Contains("inbetween: play: cannot open a window: no display"));
 }
 
-namespace {
-
-// A copy of the square-arch-notch scene in its own temporary folder, to edit.
-fs::path sceneCopy(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("inbetween-play-test-" + name);
-  fs::remove_all(dir);
-  fs::copy(fs::path(INBETWEEN_ASSETS) / "square-arch-notch", dir, fs::copy_options::recursive);
-  return dir;
-}
-
-// Presents frames until `done` holds (true) or `seconds` pass (false).
-bool presentUntil(play::PlayerWindow& window, const std::function<bool()>& done, double seconds) {
-  const auto start = std::chrono::steady_clock::now();
-  while (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() < seconds) {
-    window.frame();
-    if (done()) return true;
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  }
-  return false;
-}
-
-bool hasMessage(play::PlayerSession& session, bool error) {
-  for (const play::PlayerSession::Message& m : session.messages())
-    if (m.error == error) return true;
-  return false;
-}
-
-}  // namespace
 
 TEST_CASE("play: a drawing edited on disk is picked up while playing, a broken scene file keeps the last good one, "
           "its error shown", "[.window]") {
@@ -282,118 +124,6 @@ TEST_CASE("play: a drawing edited on disk is picked up while playing, a broken s
   CHECK(messages.empty());
 }
 
-TEST_CASE("play: Save parameters writes the tuned values into the scene, which then plays the same frames", "[.window]") {
-  const fs::path dir = sceneCopy("save");
-  const std::string path = (dir / "scene.json").string();
-  constexpr int kFrame = 20;  // the notch opening: where tau matters
-  play::PlayerSession tuned(std::make_unique<play::SceneReloader>(path), {});
-  const Scene original = tuned.scene().scene;
-  tuned.parameters().set("tau", 0.004);
-  tuned.parameters().set("lambda", 2500);
-  tuned.update(0);
-  REQUIRE(tuned.worker().waitIdle(120));
-  tuned.saveParameters();
-  REQUIRE_FALSE(hasMessage(tuned, true));
-
-  play::PlayerSession saved(std::make_unique<play::SceneReloader>(path), {});
-  CHECK(saved.parameters().get("tau") == 0.004);
-  CHECK(saved.parameters().get("lambda") == 2500);
-  for (const play::Control& c : saved.parameters().all()) CHECK(c.value == c.initial);
-  // The frames themselves, played from the timeline's start as a stream: the worker's frames near
-  // the notch's release depend on which frames it happened to solve first (a frame solved cold
-  // there settles up to 18 px away, in the energy's other minimum), so they are compared here
-  // through the stream, which is deterministic. The saved scene plays what the tuned session
-  // solves, and the tuning is visible there (19.5 px at frame 20).
-  const Multimesh& mesh = *saved.scene().mesh;
-  const auto frameOf = [&](const Scene& scene, const InterpolationParams& params) {
-    FrameStream stream(mesh, scene.timeline, params, SolverOptions{}, scene.dynamics);
-    AnimationFrame frame = stream.next();
-    while (frame.index < kFrame && !stream.done()) frame = stream.next();
-    REQUIRE(frame.index == kFrame);
-    return frame.x;
-  };
-  InterpolationParams tunedParams = original.interpolation;
-  tunedParams.cohesive.tau = 0.004;
-  tunedParams.cohesive.lambda = 2500;
-  const Eigen::MatrixX2d fromSaved = frameOf(saved.scene().scene, saved.scene().scene.interpolation);
-  // Within 1e-3 px, not bit for bit: with the tuned session's worker busy beside it, two plays
-  // of the stream came 5.8e-6 px apart (seen once in five runs).
-  CHECK((fromSaved - frameOf(original, tunedParams)).cwiseAbs().maxCoeff() < 1e-3);
-  CHECK((fromSaved - frameOf(original, original.interpolation)).cwiseAbs().maxCoeff() > 5.0);
-}
-
-namespace {
-
-// `xdotool ARGS` against the X display the test runs on; its output without the final newline.
-std::string xdotool(const std::string& args) {
-  std::string out = test::runCommand("xdotool " + args).output;
-  while (!out.empty() && (out.back() == '\n' || out.back() == ' ')) out.pop_back();
-  return out;
-}
-
-// Repeats `act` until `done` holds (true), at most `attempts` times, `done` polled for up to 5 s
-// after each: the window takes input once its first frames are drawn, which nothing announces.
-bool actUntil(const std::function<void()>& act, const std::function<bool()>& done, int attempts) {
-  for (int a = 0; a < attempts; ++a) {
-    act();
-    for (int k = 0; k < 50; ++k) {
-      if (done()) return true;
-      std::this_thread::sleep_for(std::chrono::milliseconds(100));
-    }
-  }
-  return false;
-}
-
-}  // namespace
-
-TEST_CASE("play: in the window, with real input, a typed slider value and a picked choice are saved by Ctrl+S as one line",
-          "[.window]") {
-  const fs::path dir = sceneCopy("real-input");
-  const std::string file = (dir / "scene.json").string();
-  const std::string original = readFile(file);
-  Run run;
-  std::atomic<bool> ended{false};
-  std::thread player([&] {
-    run = inbetween("play " + file + " --size 960x600 --device cpu");
-    ended = true;
-  });
-  std::string window;
-  for (int k = 0; k < 300 && window.empty(); ++k) {  // up to a minute: the scene is meshed first
-    window = xdotool("search --name \"inbetween play - " + file + "\"");
-    if (window.empty()) std::this_thread::sleep_for(std::chrono::milliseconds(200));
-  }
-  REQUIRE_FALSE(window.empty());
-  // The Parameters tab (the side panel's first) in a 960 x 600 window: tau's slider on the
-  // second row, the metric's list on the fifth. A double-click types a value; Enter sets it.
-  const bool typed = actUntil(
-      [&] {
-        xdotool("mousemove --window " + window + " 730 102 click --repeat 2 --delay 80 1");
-        xdotool("type --delay 40 1e-9");
-        xdotool("key Return");
-        xdotool("key ctrl+s");
-      },
-      [&] { return readFile(file).find("\"tau\": 1e-09") != std::string::npos; }, 5);
-  CHECK(typed);
-  const bool picked = actUntil(
-      [&] {
-        xdotool("mousemove --window " + window + " 700 174 click 1");
-        xdotool("sleep 0.5 mousemove --window " + window + " 660 217 click 1");
-        xdotool("key ctrl+s");
-      },
-      [&] { return readFile(file).find("\"per_key\"") != std::string::npos; }, 5);
-  CHECK(picked);
-  xdotool("key Escape");  // to the focused window: GLFW ignores events sent to a window by id
-  const bool closed = actUntil([] {}, [&] { return ended.load(); }, 6);
-  if (!closed) test::runCommand("pkill -f \"inbetween play " + file + "\"");  // so that the test ends
-  player.join();
-  CHECK(closed);
-  INFO(run.output);
-  CHECK(run.code == 0);
-  // Everything the file said stays as it was written; the two values come as one new line.
-  const size_t end = original.rfind('}');
-  CHECK(readFile(file) == original.substr(0, end - 1) + ",\n  \"solver\": {\"tau\": 1e-09, \"metric\": \"per_key\"}\n}" +
-                              original.substr(end + 1));
-}
 
 TEST_CASE("play: the keyboard shortcuts drive the transport, weights mode, the overlays and closing", "[.window]") {
   play::PlayerSession session(std::make_unique<play::SceneReloader>(kScene), {});

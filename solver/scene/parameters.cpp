@@ -309,12 +309,12 @@ double parseParameterText(const ParameterSpec& spec, const std::string& text, co
 std::string formatParameterValue(const ParameterSpec& spec, double value) {
   switch (spec.kind) {
     case K::kToggle: return value != 0 ? "on" : "off";
-    case K::kChoice: {
-      const int i = static_cast<int>(value);
-      return i >= 0 && i < static_cast<int>(spec.choices.size()) ? spec.choices[i].word : shortNumber(value);
-    }
+    case K::kChoice:  // an index out of the list (a value being refused) is said as a number
+      if (!(value >= 0 && value < double(spec.choices.size()) && value == std::floor(value))) return shortNumber(value);
+      return spec.choices[static_cast<size_t>(value)].word;
     case K::kColor: {
-      if (value < 0) return "none";
+      if (value == -1) return "none";
+      if (!(value >= 0 && value <= 0xffffff && value == std::floor(value))) return shortNumber(value);
       char text[8];
       std::snprintf(text, sizeof text, "%06x", static_cast<int>(value));
       return text;

@@ -1,0 +1,132 @@
+#include "play_fixtures.h"
+
+#include "player/player_ui.h"
+#include "player/view_navigation.h"
+
+#include <catch2/catch.hpp>
+#include <chrono>
+#include <cmath>
+#include <thread>
+
+namespace playtest {
+
+namespace fs = std::filesystem;
+using namespace ib;
+using Run = test::CommandRun;
+
+const std::string kScene = std::string(INBETWEEN_ASSETS) + "/square-arch-notch/scene.json";
+
+namespace {
+
+// Where the readouts panel (play::readoutsPanel) and an error banner (play::messageBanner) sit
+// over the picture: their samples are skipped.
+bool underPanels(double x, double y) { return (x < 330 && y < 230) || y < 140; }
+
+}  // namespace
+
+Run inbetween(const std::string& args, const std::string& prefix) {
+  return test::runCommand(prefix + " " + INBETWEEN_CLI + " " + args);
+}
+
+RgbaImage screenshot(const std::string& name, const std::string& options, int frames, const std::string& scene) {
+  const std::string path = (fs::temp_directory_path() / ("inbetween-play-test-" + name + ".png")).string();
+  fs::remove(path);
+  const Run run = inbetween("play " + scene + " --frames " + std::to_string(frames) + " --screenshot " + path + " --size " +
+                            std::to_string(kWidth) + "x" + std::to_string(kHeight) + " --device cpu --validation " + options);
+  INFO(run.output);
+  REQUIRE(run.code == 0);
+  const RgbaImage image = readPng(path);
+  REQUIRE(image.width == kWidth);
+  REQUIRE(image.height == kHeight);
+  return image;
+}
+
+RgbaImage drawing(const std::string& name) { return readPng(std::string(INBETWEEN_ASSETS) + "/square-arch-notch/" + name); }
+
+int mismatches(const RgbaImage& shot, const RgbaImage& art, int tolerance, int* compared) {
+  const play::PixelRect canvas = play::canvasRect(kWidth, kHeight);
+  const render::ViewBox view = play::ViewNavigation().windowView({0, 0, double(art.width), double(art.height)}, canvas, kWidth, kHeight);
+  const uint8_t backdrop = static_cast<uint8_t>(play::ViewSettings().backdrop.colour[0] * 255 + 0.5);
+  int bad = 0;
+  *compared = 0;
+  for (int y = 3; y < art.height - 3; ++y)
+    for (int x = 3; x < art.width - 3; ++x) {
+      bool uniform = true;
+      for (int dy = -3; dy <= 3 && uniform; ++dy)
+        for (int dx = -3; dx <= 3 && uniform; ++dx)
+          for (int c = 0; c < 4; ++c) uniform = uniform && art.at(x + dx, y + dy)[c] == art.at(x, y)[c];
+      if (!uniform || (art.at(x, y)[3] != 0 && art.at(x, y)[3] != 255)) continue;
+      const Eigen::Vector2d p = play::toWindow(view, kWidth, kHeight, {x + 0.5, y + 0.5});
+      if (underPanels(p.x(), p.y())) continue;
+      const uint8_t* got = shot.at(static_cast<int>(p.x()), static_cast<int>(p.y()));
+      ++*compared;
+      for (int c = 0; c < 3; ++c) {
+        const int want = art.at(x, y)[3] == 255 ? art.at(x, y)[c] : backdrop;
+        if (std::abs(int(got[c]) - want) > tolerance) {
+          ++bad;
+          break;
+        }
+      }
+    }
+  return bad;
+}
+
+int pictureDifference(const RgbaImage& a, const RgbaImage& b) {
+  const play::PixelRect canvas = play::canvasRect(kWidth, kHeight);
+  int differ = 0;
+  for (int y = 0; y < static_cast<int>(canvas.y1); ++y)
+    for (int x = 0; x < static_cast<int>(canvas.x1); ++x) {
+      if (underPanels(x, y)) continue;
+      for (int c = 0; c < 3; ++c)
+        if (std::abs(int(a.at(x, y)[c]) - int(b.at(x, y)[c])) > 32) {
+          ++differ;
+          break;
+        }
+    }
+  return differ;
+}
+
+
+fs::path sceneCopy(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("inbetween-play-test-" + name);
+  fs::remove_all(dir);
+  fs::copy(fs::path(INBETWEEN_ASSETS) / "square-arch-notch", dir, fs::copy_options::recursive);
+  return dir;
+}
+
+bool presentUntil(play::PlayerWindow& window, const std::function<bool()>& done, double seconds) {
+  const auto start = std::chrono::steady_clock::now();
+  while (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() < seconds) {
+    window.frame();
+    if (done()) return true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  return false;
+}
+
+bool hasMessage(play::PlayerSession& session, bool error) {
+  for (const play::PlayerSession::Message& m : session.messages())
+    if (m.error == error) return true;
+  return false;
+}
+
+
+std::string xdotool(const std::string& args) {
+  std::string out = test::runCommand("xdotool " + args).output;
+  while (!out.empty() && (out.back() == '\n' || out.back() == ' ')) out.pop_back();
+  return out;
+}
+
+bool actUntil(const std::function<void()>& act, const std::function<bool()>& done, int attempts) {
+  for (int a = 0; a < attempts; ++a) {
+    act();
+    for (int k = 0; k < 50; ++k) {
+      if (done()) return true;
+      std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    }
+  }
+  return false;
+}
+
+
+}  // namespace playtest

@@ -1,0 +1,58 @@
+// What the player's window tests share (test_play.cpp, test_play_controls.cpp): scripted runs of
+// `inbetween play` and their screenshots compared with drawings and rendered frames through the
+// player's own layout, scene copies to edit, and real input through xdotool.
+#pragma once
+
+#include "core/png_image.h"
+#include "player/player_session.h"
+#include "player/player_window.h"
+#include "testkit/command_run.h"
+
+#include <filesystem>
+#include <functional>
+#include <string>
+
+namespace playtest {
+
+constexpr int kWidth = 960, kHeight = 600;  // the scripted window's size
+extern const std::string kScene;            // square-arch-notch's scene file
+
+// Runs `inbetween ARGS` (prefix: words before the command, e.g. env -u DISPLAY).
+test::CommandRun inbetween(const std::string& args, const std::string& prefix = "");
+
+// A scripted run of `frames` frames of a scene (default square-arch-notch) in a kWidth x kHeight
+// window on lavapipe with the validation layer; returns its screenshot (the test fails when the
+// run does).
+ib::RgbaImage screenshot(const std::string& name, const std::string& options, int frames = 1, const std::string& scene = kScene);
+
+// square-arch-notch's drawing `name` ("square.png").
+ib::RgbaImage drawing(const std::string& name);
+
+// Compares the screenshot with `art` (a key's drawing or a rendered frame, on the scene's
+// 128 x 128 canvas) at every pixel of art whose 7 x 7 neighbourhood is one colour (shape interiors
+// and the paper away from outlines, which move by a fraction of a pixel between a key and the
+// solve at its weights), mapped through the player's layout. Returns how many of those samples
+// are off by more than `tolerance` /255 in a channel; opaque texels are compared to their colour,
+// transparent ones to the backdrop's grey; the readouts' and banner's places are skipped.
+int mismatches(const ib::RgbaImage& shot, const ib::RgbaImage& art, int tolerance, int* compared);
+
+// Pixels of the picture (the canvas outside the readouts) that differ by more than 32/255.
+int pictureDifference(const ib::RgbaImage& a, const ib::RgbaImage& b);
+
+// A copy of the square-arch-notch scene in its own temporary folder, to edit.
+std::filesystem::path sceneCopy(const std::string& name);
+
+// Presents frames until `done` holds (true) or `seconds` pass (false).
+bool presentUntil(ib::play::PlayerWindow& window, const std::function<bool()>& done, double seconds);
+
+// Whether the session's messages hold an error (error = true) or a notice.
+bool hasMessage(ib::play::PlayerSession& session, bool error);
+
+// `xdotool ARGS` against the X display the test runs on; its output without the final newline.
+std::string xdotool(const std::string& args);
+
+// Repeats `act` until `done` holds (true), at most `attempts` times, `done` polled for up to 5 s
+// after each: a window takes input once its first frames are drawn, which nothing announces.
+bool actUntil(const std::function<void()>& act, const std::function<bool()>& done, int attempts);
+
+}  // namespace playtest
