@@ -8,6 +8,9 @@
 
 namespace ib::cli {
 
+// The most threads any --threads option takes.
+constexpr int kMaxThreads = 1024;
+
 // Parsed options of one subcommand: --name value pairs, --flags and positional arguments.
 class Arguments {
  public:

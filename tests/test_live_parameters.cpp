@@ -293,9 +293,24 @@ TEST_CASE("saveParameters: saved parameters load back as tuned, every other fiel
 TEST_CASE("saveParameters: saving untouched parameters leaves every field of the scene file as it was") {
   const std::string file = written("square-arch-stretch", "save-untouched");
   const Json before = readJson(file);
-  play::saveParameters(file, LiveParameters(loadScene(file)), 24);
+  LiveParameters untouched(loadScene(file));
+  play::saveParameters(file, untouched, 24);
   CHECK(readJson(file) == before);
   CHECK(readJson(file).dump() == before.dump());
+}
+
+TEST_CASE("saveParameters: saving twice before the scene is reloaded scales the stiffness once") {
+  const std::string file = written("square-arch-stretch", "save-twice");
+  const Scene scene = loadScene(file);
+  LiveParameters p(scene);
+  p.set("kappa_scale", 2);
+  play::saveParameters(file, p, 24);
+  play::saveParameters(file, p, 24);
+  CHECK(loadScene(file).kappa == 2 * scene.kappa);
+  CHECK(loadScene(file).stiffness.regions.at(0).kappa == 2 * scene.stiffness.regions.at(0).kappa);
+  p.set("kappa_scale", 3);  // moved again: scaled by what it moved since
+  play::saveParameters(file, p, 24);
+  CHECK(loadScene(file).kappa == Approx(3 * scene.kappa));
 }
 
 TEST_CASE("saveParameters: saving with dynamics off writes epsilon 0") {

@@ -196,3 +196,26 @@ TEST_CASE("scene: cut features are named after the cut and the kind of its ends"
   CHECK(cutFeatureNames("s", CutKind::kSplit).size() == 4);
   CHECK(cutFeatureNames("s", CutKind::kSlit) == std::vector<std::string>{"s.start", "s.end"});
 }
+
+TEST_CASE("scene: a misspelt or extra feature is blamed on the key that holds it, with the name meant") {
+  // Three keys: "arch" and a copy "arch2" place "top"; the square misspells it.
+  json j = squareArch();
+  j["keys"].push_back(j["keys"][1]);
+  j["keys"][2]["name"] = "arch2";
+  j["keys"][0]["features"] = {{"tpo", {64, 24}}};
+  CHECK(messageOf(j) == "square-arch.json: key \"square\": does not place feature \"top\" (keys \"arch\" and \"arch2\" do); "
+                        "it places \"tpo\": did you mean \"top\"?");
+  // One key places a feature no other does.
+  j = squareArch();
+  j["keys"].push_back(j["keys"][1]);
+  j["keys"][2]["name"] = "arch2";
+  j["keys"][1]["features"]["chin"] = {64, 100};
+  CHECK(messageOf(j) == "square-arch.json: key \"arch\": places feature \"chin\", which keys \"square\" and \"arch2\" do not: "
+                        "place it in every key, or in none");
+  // Two keys: the first key's names are the ones meant.
+  j = squareArch();
+  j["keys"][1]["features"].erase("top");
+  j["keys"][1]["features"]["Top"] = {64, 20};
+  CHECK(messageOf(j) == "square-arch.json: key \"arch\": places feature \"Top\", which key \"square\" does not (did you "
+                        "mean \"top\"?)");
+}

@@ -130,6 +130,7 @@ TEST_CASE("scene document: an edit that cannot apply changes nothing and says wh
   CHECK_THAT(inputError([&] { document.apply(edit::SetParameter{"tau", 0}); }), Catch::Contains("(0, 1e+06]"));
   CHECK_THAT(inputError([&] { document.apply(edit::AddCut{"square", "a.b", "notch", {{1, 1}, {2, 2}}}); }),
              Catch::Contains("reserved"));
+  CHECK_THAT(inputError([&] { document.apply(edit::AddMark{1.0000004, "square"}); }), Catch::Contains("mark 2 is at 1 s already"));
   CHECK_THAT(inputError([&] { document.setFromText("tua=1"); }), Catch::Contains("did you mean \"tau\""));
   CHECK_THAT(inputError([&] { document.setFromText("kappa_scale=2"); }), Catch::Contains("player's own"));
   CHECK(document.text() == original);

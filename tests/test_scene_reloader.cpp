@@ -75,7 +75,7 @@ constexpr double kBuildSeconds = 300;
 
 // Saves `params` (at 12 fps) into the reloader's scene file, moves its time `seconds` on, polls
 // and requires the reload.
-void saveAndReload(SceneReloader& reloader, const play::LiveParameters& params, int seconds) {
+void saveAndReload(SceneReloader& reloader, play::LiveParameters& params, int seconds) {
   const std::string file = reloader.path();
   play::saveParameters(file, params, 12);
   later(file, seconds);

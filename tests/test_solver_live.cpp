@@ -12,7 +12,9 @@
 #include <atomic>
 #include <random>
 #include <stdexcept>
+#include <pthread.h>
 #include <thread>
+#include <time.h>
 
 using namespace ib;
 
@@ -140,17 +142,31 @@ TEST_CASE("live solver: a cancel flag set from another thread stops a solve that
   CHECK(none.iterations == 0);
   CHECK(none.x.allFinite());
   cancel = false;
-  // The other thread raises the flag as the solve begins, at whatever point of it that falls.
-  std::atomic<bool> solving{false};
+  // The other thread raises the flag once the solving thread has spent 50 ms of CPU time in the
+  // solve: past its start (a millisecond or two; H is factorized already), into its iterations,
+  // however busy the machine is.
+  clockid_t solving{};
+  REQUIRE(pthread_getcpuclockid(pthread_self(), &solving) == 0);
+  const auto cpuSeconds = [&] {
+    timespec t{};
+    clock_gettime(solving, &t);
+    return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
+  };
+  std::atomic<bool> started{false}, returned{false};
+  std::atomic<double> from{0};
   std::thread canceller([&] {
-    while (!solving) std::this_thread::yield();
+    while (!started) std::this_thread::yield();
+    while (!returned && cpuSeconds() < from + 0.05) std::this_thread::yield();
     cancel = true;
   });
-  solving = true;
+  from = cpuSeconds();
+  started = true;
   const InterpolationResult r = solver.solve(Eigen::Vector2d(0.5, 0.5));
+  returned = true;  // a solve that ended on its own fails the checks below instead of hanging here
   canceller.join();
   CHECK(r.cancelled);
   CHECK_FALSE(r.converged);
+  CHECK(r.iterations > 0);
   CHECK(r.iterations < slow.maxIterations);
   CHECK(r.x.allFinite());
   CHECK(r.energy <= r.startEnergy);

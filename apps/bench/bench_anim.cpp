@@ -112,7 +112,7 @@ nlohmann::json playScene(const std::filesystem::path& file, bool comesh, int thr
 
 void run(const cli::Arguments& a, const BenchOutput& output) {
   const std::filesystem::path assets = a.has("assets") ? std::filesystem::path(a.value("assets", "")) : bundledAssets("anim");
-  const int threads = cli::integerList(a.value("threads", "0"), "threads", 0, 256).front();
+  const int threads = cli::integerList(a.value("threads", "0"), "threads", 0, cli::kMaxThreads).front();
   const bool contended = a.flag("contended");
   const int repeats = a.integer("repeats", contended ? 3 : 1, 1, 100);
   const std::vector<std::string> only = a.has("scenes") ? cli::wordList(a.value("scenes", ""), "--scenes") : std::vector<std::string>{};

@@ -114,7 +114,7 @@ void run(const cli::Arguments& a, const BenchOutput& output) {
   const std::vector<int> sizes = cli::integerList(a.value("sizes", "1k,10k,50k"), "sizes", 18, 2000000);
   const int frames = a.integer("frames", 50, 1, 100000);
   const int repeats = a.integer("repeats", 3, 1, 100);
-  const int threads = a.integer("threads", 0, 0, 1024);
+  const int threads = a.integer("threads", 0, 0, cli::kMaxThreads);
   for (int vertices : sizes)
     for (bool update : {true, false}) {
       cli::Progress progress;

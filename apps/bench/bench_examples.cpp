@@ -148,7 +148,7 @@ nlohmann::json animationTable(const std::string& name, const Scene& scene, const
 
 void run(const cli::Arguments& a, const BenchOutput& output) {
   const std::filesystem::path assets = a.has("assets") ? std::filesystem::path(a.value("assets", "")) : bundledAssets("examples");
-  const int threads = cli::integerList(a.value("threads", "0"), "threads", 0, 256).front();
+  const int threads = cli::integerList(a.value("threads", "0"), "threads", 0, cli::kMaxThreads).front();
   const std::string only = a.value("only", "");
   if (!std::filesystem::is_directory(assets)) throw InputError("bench examples: --assets: " + assets.string() + " is not a folder");
   int measured = 0;

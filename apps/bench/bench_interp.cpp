@@ -270,7 +270,7 @@ void run(const cli::Arguments& a, const BenchOutput& output) {
   const std::vector<int> keyCounts = cli::integerList(a.value("keys", "2,4"), "keys", 1, 4);
   const int frames = a.integer("frames", 24, 1, 100000);
   const int repeats = a.integer("repeats", 3, 1, 100);
-  const int threads = a.integer("threads", 0, 0, 1024);
+  const int threads = a.integer("threads", 0, 0, cli::kMaxThreads);
   for (int vertices : sizes)
     for (int keys : keyCounts)
       output.printLine(benchCase(vertices, keys, frames, repeats, threads, !a.flag("no-baseline"), a.flag("contended")));

@@ -52,7 +52,7 @@ void run(const cli::Arguments& a, const BenchOutput& output) {
   if (!std::filesystem::is_directory(assets)) throw InputError("bench mesh: --assets: " + assets.string() + " is not a folder");
   const bool contended = a.flag("contended");
   const int repeats = a.integer("repeats", contended ? 3 : 1, 1, 100);
-  const int threads = a.integer("threads", 0, 0, 1024);
+  const int threads = a.integer("threads", 0, 0, cli::kMaxThreads);
   const std::vector<std::string> only = a.has("scenes") ? cli::wordList(a.value("scenes", ""), "--scenes") : std::vector<std::string>{};
   std::vector<std::filesystem::path> scenes;
   for (const auto& entry : std::filesystem::directory_iterator(assets)) {

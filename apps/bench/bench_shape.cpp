@@ -140,7 +140,7 @@ void run(const cli::Arguments& a, const BenchOutput& output) {
   if (metricName == "per_key" || metricName == "both") metrics.push_back(ShapeMetric::kPerKey);
   if (metrics.empty()) throw InputError("bench shape: --metric: '" + metricName + "' is not shared, per_key or both");
   const int steps = a.integer("steps", 24, 4, 1000);
-  const int threads = a.integer("threads", 0, 0, 256);
+  const int threads = a.integer("threads", 0, 0, cli::kMaxThreads);
   const std::string spacing = a.value("spacing", "weights");
   if (spacing != "weights" && spacing != "even") throw InputError("bench shape: --spacing: '" + spacing + "' is not weights or even");
   for (const auto& file : scenes) {

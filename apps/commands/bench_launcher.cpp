@@ -5,6 +5,7 @@
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
+#include <stdexcept>
 #include <unistd.h>
 
 namespace ib {
@@ -23,7 +24,7 @@ void runBenchProgram(const std::vector<std::string>& args) {
   for (std::string& word : words) argv.push_back(word.data());
   argv.push_back(nullptr);
   execv(program.c_str(), argv.data());
-  throw InputError("bench: cannot run " + program.string() + ": " + std::strerror(errno));
+  throw std::runtime_error("bench: cannot run " + program.string() + ": " + std::strerror(errno));
 }
 
 }  // namespace ib

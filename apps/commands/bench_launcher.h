@@ -9,7 +9,8 @@
 namespace ib {
 
 // Replaces this process with inbetween-bench from the same folder, given `args`; returns only
-// by throwing: InputError when it is not there or cannot be run, naming the path.
+// by throwing: InputError when it is not there (build or install it), std::runtime_error when it
+// is there but cannot be run, naming the path.
 [[noreturn]] void runBenchProgram(const std::vector<std::string>& args);
 
 }  // namespace ib

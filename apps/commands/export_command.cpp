@@ -79,14 +79,15 @@ int runExport(const std::vector<std::string>& rawArgs) {
     job.gltf.pixelsPerUnit = cli::positiveNumber(arguments.value("pixels-per-unit", ""), "--pixels-per-unit", 1e6, "a scale");
   job.gltf.quantize = arguments.flag("quantize");
   job.gltf.meshopt = arguments.flag("meshopt");
-  job.solving.solver.threads = arguments.integer("threads", 0, 0, 256);
+  job.solving.solver.threads = arguments.integer("threads", 0, 0, cli::kMaxThreads);
   SceneMultimeshOptions meshOptions;
   meshOptions.meshFile = arguments.value("mesh", "");
   meshOptions.comesh = !arguments.flag("no-comesh");
   std::vector<std::string> sets = split.sets;
   if (arguments.has("fps")) sets.push_back(cli::optionAsSet("--fps", arguments.value("fps", ""), "fps"));
   if (arguments.has("sampling")) sets.push_back(cli::optionAsSet("--sampling", arguments.value("sampling", ""), "sampling"));
-  if (cli::changesMultimesh(sets)) meshOptions.useCache = false;  // the cache is of the file's parameters
+  if (cli::changesMultimesh(sets, meshOptions.meshFile)) meshOptions.useCache = false;  // the cache is of the file's parameters
+  meshOptions.threads = job.solving.solver.threads;
 
   gltf::checkGltfPath(output, "-o");  // before the long work: fail fast on a wrong name
   const SceneDocument document = cli::sceneDocument(scenePath, sets);
@@ -97,6 +98,10 @@ int runExport(const std::vector<std::string>& rawArgs) {
   job.gltf.sampling = nearestSampling(scene, drawings) ? render::Sampling::kNearest : render::Sampling::kLinear;
   job.frames = arguments.has("frames") ? cli::frameRange(arguments.value("frames", ""), "--frames")
                                        : std::array<int, 2>{0, scene.timeline.frameCount() - 1};
+  if (job.frames[1] >= scene.timeline.frameCount())  // before the long work: fail fast
+    throw InputError("--frames: the timeline has frames 0.." + std::to_string(scene.timeline.frameCount() - 1) +
+                     ", asked for " + std::to_string(job.frames[0]) + ".." +
+                     std::to_string(job.frames[1]) + ": ask for frames within it");
   job.name = fs::path(scene.file).parent_path().filename().string();
   if (job.name.empty() || job.name == "." || job.name == "..") job.name = fs::path(scene.file).stem().string();
   const fs::path parent = fs::path(output).parent_path();

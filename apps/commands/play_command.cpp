@@ -139,7 +139,7 @@ int runPlay(const std::vector<std::string>& rawArgs) {
   else if (device == "cpu") windowOptions.device = vk::DevicePreference::kSoftware;
   else throw InputError("--device: '" + device + "' is not any, gpu or cpu");
   play::SolveWorker::Options workerOptions;
-  workerOptions.threads = arguments.integer("threads", 0, 0, 256);
+  workerOptions.threads = arguments.integer("threads", 0, 0, cli::kMaxThreads);
   if (!std::getenv("DISPLAY") && !std::getenv("WAYLAND_DISPLAY"))  // before the long work: fail fast
     throw InputError("play: cannot open a window: no display (neither DISPLAY nor WAYLAND_DISPLAY is set); "
                      "`inbetween render` draws frames headless");

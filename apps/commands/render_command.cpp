@@ -62,6 +62,17 @@ std::string describeSource(const SceneMultimesh& mesh) {
   return mesh.comesh ? "built (with Comesh Optimization)" : "built (initial map)";
 }
 
+// --frames within the timeline, --sheet-frames within --frames.
+void checkFrames(const std::array<int, 2>& frames, const std::vector<int>& sheetFrames, int frameCount) {
+  if (frames[1] >= frameCount)
+    throw InputError("--frames: the timeline has frames 0.." + std::to_string(frameCount - 1) + ", asked for " +
+                     std::to_string(frames[0]) + ".." + std::to_string(frames[1]) + ": ask for frames within it");
+  for (const int f : sheetFrames)
+    if (f < frames[0] || f > frames[1])
+      throw InputError("--sheet-frames: frame " + std::to_string(f) + " is not rendered (frames " + std::to_string(frames[0]) +
+                       ".." + std::to_string(frames[1]) + "): choose frames within --frames");
+}
+
 }  // namespace
 
 int runRender(const std::vector<std::string>& rawArgs) {
@@ -79,11 +90,13 @@ int runRender(const std::vector<std::string>& rawArgs) {
   if (arguments.has("sampling")) sets.push_back(cli::optionAsSet("--sampling", arguments.value("sampling", ""), "sampling"));
   const SceneDocument document = cli::sceneDocument(scenePath, sets);
   const Scene& scene = document.scene();
-  if (cli::changesMultimesh(sets)) options.mesh.useCache = false;  // the cache is of the file's parameters
+  if (cli::changesMultimesh(sets, options.mesh.meshFile)) options.mesh.useCache = false;  // the cache is of the file's parameters
+  options.mesh.threads = options.threads;
   std::vector<RgbaImage> drawings = readKeyDrawings(scene);
   render::RenderJobOptions job;
   job.sampling = nearestSampling(scene, drawings) ? render::Sampling::kNearest : render::Sampling::kLinear;
   job.frames = options.frames.value_or(std::array<int, 2>{0, scene.timeline.frameCount() - 1});
+  checkFrames(job.frames, options.sheetFrames, scene.timeline.frameCount());  // before the long work: fail fast
   vk::ContextOptions contextOptions;
   contextOptions.validation = options.validation;
   contextOptions.device = options.device;

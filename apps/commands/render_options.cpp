@@ -86,7 +86,7 @@ RenderOptions parseRenderOptions(const cli::Arguments& a) {
   else if (device == "cpu") o.device = vk::DevicePreference::kSoftware;
   else throw InputError("--device: '" + device + "' is not any, gpu or cpu");
   o.validation = a.flag("validation");
-  o.threads = a.integer("threads", 0, 0, 256);
+  o.threads = a.integer("threads", 0, 0, cli::kMaxThreads);
   return o;
 }
 

@@ -32,10 +32,14 @@ std::string optionAsSet(const std::string& option, const std::string& text, cons
   return name + "=" + formatParameterValue(spec, parseParameterText(spec, text, option));
 }
 
-bool changesMultimesh(const std::vector<std::string>& sets) {
+bool changesMultimesh(const std::vector<std::string>& sets, const std::string& meshFile) {
   for (const std::string& assignment : sets) {
     const ParameterSpec* spec = findParameter(assignment.substr(0, assignment.find('=')));
-    if (spec && spec->invalidates == Invalidates::kMultimesh) return true;
+    if (!spec || spec->invalidates != Invalidates::kMultimesh) continue;
+    if (!meshFile.empty())
+      throw InputError("--set " + inQuotes(assignment) + ": " + spec->name + " shapes the multimesh, and --mesh " + meshFile +
+                       " is used as it is: drop one of them (or mesh the scene with the new value: inbetween mesh)");
+    return true;
   }
   return false;
 }

@@ -27,7 +27,8 @@ SceneDocument sceneDocument(const std::string& scenePath, const std::vector<std:
 std::string optionAsSet(const std::string& option, const std::string& text, const std::string& name);
 
 // Whether some assignment changes a parameter that shapes the multimesh: a multimesh cached
-// beside the scene is then out of date.
-bool changesMultimesh(const std::vector<std::string>& sets);
+// beside the scene is then out of date. With `meshFile` (--mesh FILE), which is used as it is,
+// such an assignment is an InputError saying so.
+bool changesMultimesh(const std::vector<std::string>& sets, const std::string& meshFile = "");
 
 }  // namespace ib::cli

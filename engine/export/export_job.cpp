@@ -12,10 +12,10 @@ namespace ib::gltf {
 GltfExportReport exportAnimation(const Scene& scene, const Multimesh& mesh, std::vector<RgbaImage> drawings,
                                  const std::string& path, const ExportJobOptions& options, const JobProgress& progress) {
   const int frameCount = scene.timeline.frameCount();
-  const auto [first, last] = options.frames;
+  const int first = options.frames[0], last = options.frames[1];
   if (first < 0 || first > last || last >= frameCount)
-    throw InputError("--frames: the timeline has frames 0.." + std::to_string(frameCount - 1) + ", asked for " +
-                     std::to_string(first) + ".." + std::to_string(last));
+    throw InputError("frames " + std::to_string(first) + ".." + std::to_string(last) + " are not in the timeline's 0.." +
+                     std::to_string(frameCount - 1));
   // Every frame a 32-bit float target of 12 bytes per vertex: refuse before solving what no glTF
   // container holds (frame dropping and meshopt shrink it only afterwards, by an amount unknown yet).
   const double targetBytes = 12.0 * mesh.vertexCount() * (last - first + 1);

@@ -135,14 +135,16 @@ FrameOptions LiveParameters::frameOptions() const {
   return options;
 }
 
-void LiveParameters::saveInto(SceneDocument& document) const {
+void LiveParameters::saveInto(SceneDocument& document) {
   const bool dynamics = get("dynamics") != 0;
   for (const Control& c : controls_) {
     if (c.spec->field.empty()) continue;
     const double value = c.spec->name == "epsilon" && !dynamics ? 0.0 : c.value;
     if (document.parameter(c.spec->name) != value) document.apply(edit::SetParameter{c.spec->name, value});
   }
-  if (get("kappa_scale") != 1) document.apply(edit::ScaleStiffness{get("kappa_scale")});
+  const double scale = get("kappa_scale");
+  if (scale != savedKappaScale_) document.apply(edit::ScaleStiffness{scale / savedKappaScale_});
+  savedKappaScale_ = scale;
 }
 
 }  // namespace ib::play

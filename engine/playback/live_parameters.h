@@ -69,8 +69,10 @@ class LiveParameters {
 
   // The player's Save: every control whose value differs from the document's is set in it (the
   // dynamics toggle off saves epsilon 0); kappa_scale, which no field holds, scales every
-  // stiffness the scene names (edit::ScaleStiffness). InputError as the edits say.
-  void saveInto(SceneDocument& document) const;
+  // stiffness the scene names (edit::ScaleStiffness) by what it has moved since the last save
+  // of these controls, so that saving twice before the reloaded scene comes back scales once.
+  // InputError as the edits say; then nothing is counted as saved.
+  void saveInto(SceneDocument& document);
 
  private:
   Control& find(const std::string& name);
@@ -78,6 +80,7 @@ class LiveParameters {
 
   std::vector<Control> controls_;
   int generation_ = 0;
+  double savedKappaScale_ = 1;  // the kappa_scale the scene file holds already (saveInto)
 };
 
 }  // namespace ib::play

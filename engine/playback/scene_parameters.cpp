@@ -6,15 +6,17 @@
 
 namespace ib::play {
 
-void saveParameters(const std::string& scenePath, const LiveParameters& params, double fps) {
+void saveParameters(const std::string& scenePath, LiveParameters& params, double fps) {
   SceneDocument document = SceneDocument::load(scenePath);
+  LiveParameters saved = params;  // counts kappa_scale as saved once the file is written
   try {
-    params.saveInto(document);
+    saved.saveInto(document);
     if (document.parameter("fps") != fps) document.apply(edit::SetParameter{"fps", fps});
   } catch (const InputError& e) {
     throw InputError(scenePath + ": cannot save the parameters: " + e.what());
   }
   document.save();
+  params = saved;
 }
 
 }  // namespace ib::play

@@ -14,6 +14,7 @@ class LiveParameters;  // live_parameters.h
 // atomically. InputError naming the file when it cannot be read, is not a JSON object or cannot
 // be written (the old file is then left as it was), and naming the field when a value leaves
 // the format's range.
-void saveParameters(const std::string& scenePath, const LiveParameters& params, double fps);
+// The file is written before `params` counts its kappa_scale as saved.
+void saveParameters(const std::string& scenePath, LiveParameters& params, double fps);
 
 }  // namespace ib::play

@@ -241,7 +241,7 @@ SolveWorker::SolveWorker(std::shared_ptr<const Multimesh> mesh, Timeline timelin
   if (timeline.keyCount() != mesh->keyCount())
     throw std::invalid_argument("solve worker: the timeline has weights for " + std::to_string(timeline.keyCount()) +
                                 " keys, the multimesh has " + std::to_string(mesh->keyCount()));
-  if (options.threads < 0) throw std::invalid_argument("solve worker: threads must be >= 0 (0 = all cores but one)");
+  if (options.threads < 0) throw std::invalid_argument("solve worker: threads must be >= 0 (0 = all cores)");
   if (options.checkpointEvery < 1) throw std::invalid_argument("solve worker: checkpointEvery must be >= 1");
   if (options.cacheFrames < 1) throw std::invalid_argument("solve worker: cacheFrames must be >= 1");
   Impl::Parameters parameters{interpolation, dynamics, kappa};

@@ -44,14 +44,14 @@ RenderJobReport renderFrames(const vk::VulkanContext& context, const Scene& scen
                              std::vector<RgbaImage> drawings, const std::vector<int>& features,
                              const RenderJobOptions& options, const JobProgress& progress) {
   const int frameCount = scene.timeline.frameCount();
-  const auto [first, last] = options.frames;
+  const int first = options.frames[0], last = options.frames[1];
   if (first < 0 || first > last || last >= frameCount)
-    throw InputError("--frames: the timeline has frames 0.." + std::to_string(frameCount - 1) + ", asked for " +
-                     std::to_string(first) + ".." + std::to_string(last));
+    throw InputError("frames " + std::to_string(first) + ".." + std::to_string(last) + " are not in the timeline's 0.." +
+                     std::to_string(frameCount - 1));
   for (const int f : options.sheetFrames)
     if (f < first || f > last)
-      throw InputError("--sheet-frames: frame " + std::to_string(f) + " is not rendered (frames " + std::to_string(first) +
-                       ".." + std::to_string(last) + "): choose frames within --frames");
+      throw InputError("sheet frame " + std::to_string(f) + " is not rendered (frames " + std::to_string(first) + ".." +
+                       std::to_string(last) + ")");
   int canvasW = 0, canvasH = 0;
   for (const RgbaImage& d : drawings) {
     canvasW = std::max(canvasW, d.width);

@@ -1,7 +1,11 @@
-// Static work splits for OpenMP parallel regions: each thread takes one contiguous block of rows,
-// the same block in every loop, so a thread may read what it wrote earlier without a barrier,
-// finds it in its own core's cache, and per-thread partial sums can be added in thread order
-// (bit-identical results from run to run, which OpenMP reductions do not promise).
+// Static work splits for OpenMP parallel regions: the rows are cut into a fixed number of blocks
+// (a thread layout's parts), and a thread takes the same blocks in every loop, so it may read
+// what it wrote earlier without a barrier and finds it in its own core's cache. Every block sums
+// on its own and the partial sums are added in block order: results are bit-identical from run
+// to run and whatever the team (teamFor; thread_budget.h), which OpenMP reductions do not promise.
+// The blocks themselves follow the most threads asked for (SolverOptions::threads, or every core),
+// so a run with another --threads, or on a machine with another core count, may differ in the
+// last bits.
 #pragma once
 
 #include <Eigen/Core>
@@ -16,13 +20,6 @@ namespace ib {
 // (omp_get_max_threads: every core, or what a TeamScope (thread_budget.h) set for the work under
 // way). The blocks' results never depend on it: a thread takes blocks self, self + team, ...
 inline int teamFor(int blocks) { return std::max(1, std::min(blocks, omp_get_max_threads())); }
-
-// The calling thread's share [first, first + count) of `size` rows, split evenly.
-inline std::pair<Eigen::Index, Eigen::Index> rowBlock(Eigen::Index size) {
-  const Eigen::Index threads = omp_get_num_threads(), id = omp_get_thread_num();
-  const Eigen::Index first = size * id / threads, last = size * (id + 1) / threads;
-  return {first, last - first};
-}
 
 // A split of rows among threads fixed by the caller (for example by which vertices each thread's
 // part of a Cholesky factor covers): thread p takes rows [start[p], start[p + 1]).

@@ -61,10 +61,10 @@ int ownRunnableThreads() {
 
 }  // namespace
 
-ThreadBudget::ThreadBudget(int limit) : limit_(std::max(1, limit)), threads_(std::max(1, limit)) {
+ThreadBudget::ThreadBudget(int limit, bool adapt) : limit_(std::max(1, limit)), threads_(std::max(1, limit)) {
   allowed_ = allowedCpus();
   cpus_ = std::max(1, static_cast<int>(allowed_.size()));
-  if (limit_ == 1) return;
+  if (limit_ == 1 || !adapt) return;
   Sample probe;
   measurable_ = !allowed_.empty() && sample(probe);
 }
@@ -155,13 +155,11 @@ int ThreadBudget::threads() {
   return threads_;
 }
 
-TeamScope::TeamScope(ThreadBudget& budget) : budget_(budget), previous_(omp_get_max_threads()) {
-  omp_set_num_threads(budget_.threads());
-}
+TeamScope::TeamScope(ThreadBudget& budget) : budget_(budget), previous_(omp_get_max_threads()) { update(); }
 
 TeamScope::~TeamScope() { omp_set_num_threads(previous_); }
 
-void TeamScope::update() { omp_set_num_threads(budget_.threads()); }
+void TeamScope::update() { omp_set_num_threads(std::min(budget_.threads(), previous_)); }
 
 int TeamScope::threads() const { return omp_get_max_threads(); }
 

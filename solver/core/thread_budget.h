@@ -27,8 +27,9 @@ namespace ib {
 
 class ThreadBudget {
  public:
-  // limit: the most threads the work can use (its blocks), >= 1. A limit of 1 never measures.
-  explicit ThreadBudget(int limit);
+  // limit: the most threads the work can use (its blocks), >= 1. A limit of 1 never measures;
+  // nor does adapt = false, which always gives the limit (to compare fixed thread counts).
+  explicit ThreadBudget(int limit, bool adapt = true);
 
   int limit() const { return limit_; }
   // The threads to use for the next stretch of work, in [1, limit()]. Cheap between windows (a
@@ -72,7 +73,8 @@ class ThreadBudget {
 // Sets the calling thread's OpenMP team size (omp_set_num_threads, which teamFor in
 // thread_block.h reads) from a budget for the regions of one stretch of work, e.g. a solve, and
 // restores the previous size when it goes out of scope. update() asks the budget again (e.g.
-// once per iteration).
+// once per iteration). The size the calling thread had (every core, or a ThreadLimit's, or
+// OMP_NUM_THREADS) caps it.
 class TeamScope {
  public:
   explicit TeamScope(ThreadBudget& budget);

@@ -95,7 +95,7 @@ Interpolator::Impl::Impl(ThreadLayout layout, const InterpolationParams& params,
       triangleSplit_(std::move(layout.triangleSplit)),
       groups_(layout.mesh.vertexCount(), meshEdges(layout.mesh)),
       anderson_(options.andersonDepth, vertexSplit_.threads()),
-      budget_(vertexSplit_.threads()) {
+      budget_(vertexSplit_.threads(), options.adaptThreads) {
   const Multimesh& mesh = layout.mesh;
   anderson_.setRowSplit(vertexSplit_, 2);  // the x and y columns of an n x 2 matrix
   const std::vector<Triangle>& triangles = layout.triangles;

@@ -79,6 +79,10 @@ struct SolverOptions {
   // always run on one; fewer than this run while other programs keep cores busy
   // (core/thread_budget.h: the thread policy). Default 0.
   int threads = 0;
+  // Run fewer threads than `threads` while other work keeps cores busy (the thread budget);
+  // false: always `threads` (as capped by the calling thread's OpenMP team size), to compare
+  // fixed thread counts. Default true.
+  bool adaptThreads = true;
 };
 
 struct InterpolationResult {

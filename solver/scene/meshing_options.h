@@ -20,7 +20,7 @@ struct TracingOptions {
   // Without alpha: the background colour (RGB) and the RGB distance above which a pixel belongs
   // to the shape. Set background to use it even when the drawing has alpha.
   std::optional<std::array<int, 3>> background;  // default: white for drawings without alpha
-  double colorThreshold = 64;                    // 1..441
+  double colorThreshold = 64;                    // RGB distance in (0, 442]
   PaperHoles holes = PaperHoles::kMarked;        // default: enclosed paper is part of the shape
 };
 

@@ -221,11 +221,6 @@ std::vector<ParameterSpec> makeTable() {
   return t;
 }
 
-std::string shortNumber(double v) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", v);
-  return text;
-}
 
 std::string choiceList(const ParameterSpec& spec) {
   std::string list;
@@ -237,6 +232,17 @@ std::string choiceList(const ParameterSpec& spec) {
 }
 
 }  // namespace
+
+// 6 significant digits where they read back (0.001, not 0.0010000000000000000208), so a value
+// written out and read again is the same value.
+std::string shortestText(double value) {
+  char text[32];
+  for (int precision = 6; precision <= 17; ++precision) {
+    std::snprintf(text, sizeof text, "%.*g", precision, value);
+    if (std::strtod(text, nullptr) == value) break;
+  }
+  return text;
+}
 
 const std::vector<ParameterSpec>& parameterTable() {
   static const std::vector<ParameterSpec> table = makeTable();  // a constant, built once
@@ -273,7 +279,7 @@ void checkParameterValue(const ParameterSpec& spec, double value, const std::str
       break;
   }
   if (!ok)
-    throw InputError(where + ": " + (std::isfinite(value) ? formatParameterValue(spec, value) : shortNumber(value)) +
+    throw InputError(where + ": " + (std::isfinite(value) ? formatParameterValue(spec, value) : shortestText(value)) +
                      " is out of range " + formatParameterRange(spec));
 }
 
@@ -308,21 +314,22 @@ double parseParameterText(const ParameterSpec& spec, const std::string& text, co
 
 std::string formatParameterValue(const ParameterSpec& spec, double value) {
   switch (spec.kind) {
-    case K::kToggle: return value != 0 ? "on" : "off";
+    case K::kToggle:  // a value being refused is said as a number
+      return value == 1 ? "on" : value == 0 ? "off" : shortestText(value);
     case K::kChoice:  // an index out of the list (a value being refused) is said as a number
-      if (!(value >= 0 && value < double(spec.choices.size()) && value == std::floor(value))) return shortNumber(value);
+      if (!(value >= 0 && value < double(spec.choices.size()) && value == std::floor(value))) return shortestText(value);
       return spec.choices[static_cast<size_t>(value)].word;
     case K::kColor: {
       if (value == -1) return "none";
-      if (!(value >= 0 && value <= 0xffffff && value == std::floor(value))) return shortNumber(value);
+      if (!(value >= 0 && value <= 0xffffff && value == std::floor(value))) return shortestText(value);
       char text[8];
       std::snprintf(text, sizeof text, "%06x", static_cast<int>(value));
       return text;
     }
     case K::kInteger:
-    case K::kNumber: return shortNumber(value);
+    case K::kNumber: return shortestText(value);
   }
-  return shortNumber(value);
+  return shortestText(value);
 }
 
 std::string formatParameterRange(const ParameterSpec& spec) {
@@ -330,10 +337,10 @@ std::string formatParameterRange(const ParameterSpec& spec) {
     case K::kToggle: return "on or off";
     case K::kChoice: return choiceList(spec);
     case K::kColor: return "RRGGBB or none";
-    case K::kInteger: return "whole numbers [" + shortNumber(spec.min) + ", " + shortNumber(spec.max) + "]";
+    case K::kInteger: return "whole numbers [" + shortestText(spec.min) + ", " + shortestText(spec.max) + "]";
     case K::kNumber: break;
   }
-  const std::string range = (spec.minOpen ? "(" : "[") + shortNumber(spec.min) + ", " + shortNumber(spec.max) + "]";
+  const std::string range = (spec.minOpen ? "(" : "[") + shortestText(spec.min) + ", " + shortestText(spec.max) + "]";
   return spec.zeroIsAuto ? "0 (follow the drawings) or " + range : range;
 }
 

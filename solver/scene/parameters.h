@@ -74,6 +74,9 @@ void checkParameterValue(const ParameterSpec& spec, double value, const std::str
 double parseParameterText(const ParameterSpec& spec, const std::string& text, const std::string& where);
 // The value as --set takes it: "1e-09", "on", "per_key", "ff8800", "none".
 std::string formatParameterValue(const ParameterSpec& spec, double value);
+// The shortest text that reads back as `value` ("0.001", "23.976023976", "1e+06").
+std::string shortestText(double value);
+
 // The accepted values, for messages and the docs: "(0, 1e+06]", "on or off", "shared or per_key".
 std::string formatParameterRange(const ParameterSpec& spec);
 

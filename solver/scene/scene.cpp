@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <set>
 #include <sstream>
 
@@ -75,7 +76,7 @@ KeySpec parseKey(const json& j, const Context& scene, const std::filesystem::pat
         requireObject(it.value(), f, {"at", "radius"});
         if (!it.value().contains("at")) throw f.error("needs \"at\": [x, y], the point in drawing pixels");
         key.interiorFeatures[it.key()] = point(it.value()["at"], f.in("at"));
-        if (it.value().contains("radius")) key.interiorRadii[it.key()] = number(it.value(), "radius", 0, f, 0.5, 1000);
+        if (it.value().contains("radius")) key.interiorRadii[it.key()] = number(it.value(), "radius", 0, f, kMinInteriorRadius, kMaxInteriorRadius);
       } else {
         key.interiorFeatures[it.key()] = point(it.value(), f, "in drawing pixels, or {\"at\": [x, y], \"radius\": r}");
       }
@@ -98,13 +99,54 @@ KeySpec parseKey(const json& j, const Context& scene, const std::filesystem::pat
   return key;
 }
 
-// When the key places a name close to `missing` (a typo), "; it places "topp": did you mean "top"?".
-std::string typoOf(const std::string& missing, const std::map<std::string, Eigen::Vector2d>& placed) {
-  std::vector<std::string> names;
-  for (const auto& [name, p] : placed) names.push_back(name);
-  for (const std::string& name : names)
-    if (!didYouMean(name, {missing}).empty()) return "; it places " + inQuotes(name) + ": did you mean " + inQuotes(missing) + "?";
-  return "";
+// "key "a"", "keys "a" and "b"", "keys "a", "b" and "c"".
+std::string keyList(const Scene& scene, const std::vector<int>& keys) {
+  std::string list = keys.size() == 1 ? "key " : "keys ";
+  for (size_t i = 0; i < keys.size(); ++i)
+    list += (i == 0 ? "" : i + 1 == keys.size() ? " and " : ", ") + inQuotes(scene.keys[keys[i]].name);
+  return list;
+}
+
+// Every key places the same names (`what`: "feature", "interior feature"; namesOf(key) lists a
+// key's). A name that some keys place and others do not is blamed on the side that looks wrong,
+// so a typo is named where it is: the keys missing a name most keys place ("does not place
+// feature "top" (keys "rest" and "open" do); it places "tpo": did you mean "top"?"), or the keys
+// placing a name few place ("places feature "tpo", which key "rest" does not (did you mean
+// "top"?)"). On a tie the first key's names are taken as meant. `rule` ends the message.
+void checkSameNames(const Scene& scene, const Context& at, const std::string& what,
+                    const std::function<std::vector<std::string>(const KeySpec&)>& namesOf, const std::string& rule) {
+  const int keys = static_cast<int>(scene.keys.size());
+  std::map<std::string, std::vector<int>> placers;  // name -> the keys placing it, in order
+  for (int k = 0; k < keys; ++k)
+    for (const std::string& name : namesOf(scene.keys[k])) placers[name].push_back(k);
+  std::vector<std::pair<std::string, std::vector<int>>> partial;
+  for (const auto& entry : placers)
+    if (static_cast<int>(entry.second.size()) < keys) partial.push_back(entry);
+  std::stable_sort(partial.begin(), partial.end(), [](const auto& a, const auto& b) { return a.second.size() > b.second.size(); });
+  for (const auto& [name, placing] : partial) {
+    std::vector<int> missing;
+    for (int k = 0; k < keys; ++k)
+      if (std::find(placing.begin(), placing.end(), k) == placing.end()) missing.push_back(k);
+    const int count = static_cast<int>(placing.size());
+    const bool meant = 2 * count > keys || (2 * count == keys && placing.front() == 0);
+    if (meant) {  // the keys missing it are wrong: perhaps they place a near name instead
+      const KeySpec& key = scene.keys[missing.front()];
+      std::string typo;
+      for (const std::string& own : namesOf(key))
+        if (static_cast<int>(placers[own].size()) < keys && !didYouMean(own, {name}).empty())
+          typo = "; it places " + inQuotes(own) + ": did you mean " + inQuotes(name) + "?";
+      throw at.in("key " + inQuotes(key.name)).error("does not place " + what + " " + inQuotes(name) + " (" +
+                                                    keyList(scene, placing) + (count == 1 ? " does" : " do") + ")" + typo + rule);
+    }
+    // The keys placing it are wrong: a typo of a name the others place, or one too many.
+    const KeySpec& key = scene.keys[placing.front()];
+    std::vector<std::string> theirs;
+    for (const std::string& other : namesOf(scene.keys[missing.front()])) theirs.push_back(other);
+    const std::string suggestion = didYouMean(name, theirs);
+    throw at.in("key " + inQuotes(key.name)).error("places " + what + " " + inQuotes(name) + ", which " + keyList(scene, missing) +
+                                                  (missing.size() == 1 ? " does" : " do") + " not" +
+                                                  (suggestion.empty() ? ": place it in every key, or in none" : suggestion) + rule);
+  }
 }
 
 // A plain feature named with a '.', which is reserved for the features cuts create: what the cut
@@ -154,11 +196,14 @@ void checkCorrespondence(const Scene& scene, const Context& at) {
       if (dot != std::string::npos) throw dottedFeature(at.in("key " + inQuotes(key.name)), f, cuts);
       plain.insert({f, key.name});
     }
-  for (const KeySpec& key : scene.keys)
-    for (const auto& [f, owner] : plain)
-      if (!key.features.count(f))
-        throw at.in("key " + inQuotes(key.name)).error("does not place feature " + inQuotes(f) + " (key " + inQuotes(owner) +
-                                                    " does)" + typoOf(f, key.features));
+  checkSameNames(scene, at, "feature",
+                 [&](const KeySpec& key) {
+                   std::vector<std::string> names;
+                   for (const auto& [f, p] : key.features)
+                     if (plain.count(f)) names.push_back(f);
+                   return names;
+                 },
+                 "");
   for (const auto& [name, cut] : cuts)
     for (int k = 0; k < static_cast<int>(scene.keys.size()); ++k) {
       const bool closed = std::count(cut.second.begin(), cut.second.end(), k) > 0;
@@ -176,22 +221,20 @@ void checkCorrespondence(const Scene& scene, const Context& at) {
 // Every key places the same interior features, none named like a plain feature. Where they lie
 // against each key's shape is checked once it is traced (meshing/key_shape.h, checkInteriorFeatures).
 void checkInteriorFeatures(const Scene& scene, const Context& at) {
-  std::map<std::string, std::string> interior;  // feature -> a key placing it
   for (const KeySpec& key : scene.keys)
     for (const auto& [f, p] : key.interiorFeatures) {
-      interior.insert({f, key.name});
       for (const KeySpec& other : scene.keys)
         if (other.features.count(f))
           throw at.in("key " + inQuotes(key.name)).error("interior feature " + inQuotes(f) + " has the name of a feature key " +
                                                       inQuotes(other.name) + " places on its outline; give it another name");
     }
-  for (const KeySpec& key : scene.keys)
-    for (const auto& [f, owner] : interior)
-      if (!key.interiorFeatures.count(f))
-        throw at.in("key " + inQuotes(key.name)).error("does not place interior feature " + inQuotes(f) + " (key " +
-                                                    inQuotes(owner) + " does)" + typoOf(f, key.interiorFeatures) +
-                                                    ": every key places the same interior features, "
-                                                    "each where that point of the drawing is in this key");
+  checkSameNames(scene, at, "interior feature",
+                 [](const KeySpec& key) {
+                   std::vector<std::string> names;
+                   for (const auto& [f, p] : key.interiorFeatures) names.push_back(f);
+                   return names;
+                 },
+                 ": every key places the same interior features, each where that point of the drawing is in this key");
 }
 
 std::string shortNumber(double v) {

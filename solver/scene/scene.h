@@ -35,6 +35,9 @@ struct CutSpec {
 // split NAME.start.left, NAME.start.right, NAME.end.left, NAME.end.right; slit NAME.start, NAME.end.
 std::vector<std::string> cutFeatureNames(const std::string& cut, CutKind kind);
 
+// px: the radii an interior feature's disc may have.
+constexpr double kMinInteriorRadius = 0.5, kMaxInteriorRadius = 1000;
+
 struct KeySpec {
   std::string name;
   std::string drawing;                               // path, resolved against the scene's folder

@@ -1,6 +1,7 @@
 #include "scene/scene_animation.h"
 
 #include "core/suggest.h"
+#include "scene/parameters.h"
 
 #include <algorithm>
 #include <filesystem>
@@ -21,6 +22,12 @@ int keyNamed(const json& j, const std::vector<std::string>& keyNames, const Cont
   return static_cast<int>(found - keyNames.begin());
 }
 
+// A painted kappa: a number in solver.kappa's range (the parameter table's "kappa").
+double kappaOf(const json& j, const Context& at) {
+  const ParameterSpec& kappa = parameter("kappa");
+  return number(j, "kappa", kappa.defaultValue, at, kappa.min, kappa.max, kappa.minOpen);
+}
+
 StiffnessRegion parseRegion(const json& j, const Context& first, const std::vector<std::string>& keyNames) {
   requireObject(j, first, {"name", "key", "polygon", "kappa"});
   StiffnessRegion region;
@@ -32,7 +39,7 @@ StiffnessRegion parseRegion(const json& j, const Context& first, const std::vect
   for (size_t i = 0; i < j["polygon"].size(); ++i)
     region.polygon.push_back(point(j["polygon"][i], at.in("polygon point " + std::to_string(i + 1))));
   if (!j.contains("kappa")) throw at.error("missing field \"kappa\"");
-  region.kappa = number(j, "kappa", 1, at, 0, 1e6, true);
+  region.kappa = kappaOf(j, at);
   return region;
 }
 
@@ -46,9 +53,9 @@ StiffnessStroke parseStroke(const json& j, const Context& at, const std::vector<
   for (size_t i = 0; i < j["points"].size(); ++i)
     stroke.points.push_back(point(j["points"][i], at.in("point " + std::to_string(i + 1))));
   if (!j.contains("radius")) throw at.error("missing field \"radius\" (px)");
-  stroke.radius = number(j, "radius", 4, at, 0.5, 1e4);
+  stroke.radius = number(j, "radius", 4, at, kMinStrokeRadius, kMaxStrokeRadius);
   if (!j.contains("kappa")) throw at.error("missing field \"kappa\"");
-  stroke.kappa = number(j, "kappa", 1, at, 0, 1e6, true);
+  stroke.kappa = kappaOf(j, at);
   return stroke;
 }
 
@@ -60,8 +67,9 @@ StiffnessPaint parseStiffness(const json& j, const Context& at, const std::vecto
   StiffnessPaint paint;
   if (j.contains("range")) {
     const Eigen::Vector2d range = point(j["range"], at.in("range"), "as [soft, stiff] kappa");
-    if (!(range(0) > 0 && range(1) > range(0) && range(1) <= 1e6))
-      throw at.in("range").error("needs 0 < soft < stiff <= 1e6");
+    const ParameterSpec& kappa = parameter("kappa");
+    if (!(range(0) > kappa.min && range(1) > range(0) && range(1) <= kappa.max))
+      throw at.in("range").error("needs 0 < soft < stiff <= 1e6, each in kappa's range " + formatParameterRange(kappa));
     paint.soft = range(0);
     paint.stiff = range(1);
   }

@@ -13,6 +13,14 @@ namespace ib {
 
 using Json = nlohmann::ordered_json;
 
+namespace {
+
+// The JSON as compact text; text that is not UTF-8 (a name typed in another encoding) is written
+// with U+FFFD in its place rather than thrown about.
+std::string compact(const Json& j) { return j.dump(-1, ' ', false, Json::error_handler_t::replace); }
+
+}  // namespace
+
 struct SceneDocument::State {
   std::string path;
   std::string original;  // the text as read (or as last saved): the layout text() keeps
@@ -29,7 +37,7 @@ struct SceneDocument::State {
   // Parses root as the loader would parse the file, keeping the scene or the problem.
   void validate() {
     try {
-      scene = parseScene(root.dump(), path);
+      scene = parseScene(compact(root), path);
       problem.reset();
     } catch (const InputError& e) {
       scene.reset();
@@ -132,7 +140,7 @@ void SceneDocument::redo() {
 
 std::string SceneDocument::text() const { return rewriteJson(state_->original, state_->root); }
 
-std::string SceneDocument::json() const { return state_->root.dump(); }
+std::string SceneDocument::json() const { return compact(state_->root); }
 
 void SceneDocument::save() {
   const std::string written = text();

@@ -3,6 +3,7 @@
 #include "scene/scene_edit_ops.h"
 
 #include "core/error.h"
+#include "scene/parameters.h"
 #include "scene/scene.h"
 
 #include <cmath>
@@ -80,7 +81,7 @@ void tidyStiffness(Json& root) {
 }
 
 void checkKappa(double kappa, const std::string& name) {
-  if (!(kappa > 0 && kappa <= 1e6)) throw InputError("stiffness " + q(name) + ": kappa " + std::to_string(kappa) + " is out of range (0, 1e6]");
+  checkParameterValue(parameter("kappa"), kappa, "stiffness " + q(name) + ": kappa");
 }
 
 void addPainted(Json& root, const char* list, Json item) {
@@ -96,8 +97,9 @@ void addPainted(Json& root, const char* list, Json item) {
 Json scaledKappa(const Json& kappa, double factor, const std::string& where) {
   if (!kappa.is_number()) throw InputError(where + ": must be a number to scale by " + std::to_string(factor));
   const double value = kappa.get<double>() * factor;
-  if (!(value > 0 && value <= 1e6))
-    throw InputError(where + ": scaling by " + std::to_string(factor) + " takes it out of (0, 1e6]");
+  const ParameterSpec& range = parameter("kappa");
+  if (!(value > range.min && value <= range.max))
+    throw InputError(where + ": scaling by " + std::to_string(factor) + " takes it out of " + formatParameterRange(range));
   return std::floor(value) == value && value < 1e15 ? Json(static_cast<long long>(value)) : Json(value);
 }
 
@@ -218,8 +220,9 @@ void applyCutEdit(Json& root, const SceneEdit& edit) {
           },
           [&](const AddStiffnessStroke& e) {
             if (e.points.empty()) throw InputError("stiffness stroke " + q(e.name) + " needs at least 1 point");
-            if (!(e.radius >= 0.5 && e.radius <= 1e4))
-              throw InputError("stiffness stroke " + q(e.name) + ": radius " + std::to_string(e.radius) + " is out of range [0.5, 10000] px");
+            if (!(e.radius >= kMinStrokeRadius && e.radius <= kMaxStrokeRadius))
+              throw InputError("stiffness stroke " + q(e.name) + ": radius " + shortestText(e.radius) + " px is out of range [" +
+                               shortestText(kMinStrokeRadius) + ", " + shortestText(kMaxStrokeRadius) + "]");
             checkKappa(e.kappa, e.name);
             addPainted(root, "strokes",
                        Json{{"name", e.name}, {"key", e.key}, {"kappa", e.kappa}, {"radius", e.radius},
@@ -252,7 +255,10 @@ void applyCutEdit(Json& root, const SceneEdit& edit) {
           [&](const ScaleStiffness& e) { scaleStiffness(root, e.factor); },
           [&](const auto&) { throw std::logic_error("applyCutEdit: not a cut, hole or stiffness edit"); }},
       edit);
-  tidyStiffness(root);
+  const bool stiffnessEdit = std::holds_alternative<AddStiffnessRegion>(edit) || std::holds_alternative<AddStiffnessStroke>(edit) ||
+                             std::holds_alternative<RemoveStiffness>(edit) || std::holds_alternative<RenameStiffness>(edit) ||
+                             std::holds_alternative<MoveStiffnessPoint>(edit) || std::holds_alternative<SetStiffnessKappa>(edit);
+  if (stiffnessEdit) tidyStiffness(root);  // the lists the lookups made; other edits leave "stiffness" as the file has it
 }
 
 }  // namespace ib::edit

@@ -1,6 +1,7 @@
 // The scene document's edits of timeline marks and of parameters (the parameter table).
 #include "scene/scene_edit_ops.h"
 
+#include "animation/timeline.h"
 #include "core/error.h"
 #include "scene/parameter_json.h"
 #include "scene/parameters.h"
@@ -18,6 +19,12 @@ std::string seconds(double time) {
   return text;
 }
 
+Json timeJson(double time) {
+  if (!std::isfinite(time)) throw InputError("timeline: a mark's time must be a finite number of seconds");
+  const double rounded = std::round(time * 1e6) / 1e6;
+  return rounded == std::floor(rounded) && std::fabs(rounded) < 1e9 ? Json(static_cast<long long>(rounded)) : Json(rounded);
+}
+
 // The "marks" array. A timeline without marks plays every key a second apart (defaultTimeline);
 // before its first edit those marks are written out, so the edit changes that timeline.
 Json& marks(Json& root) {
@@ -25,14 +32,14 @@ Json& marks(Json& root) {
   Json& timeline = root["timeline"];
   if (timeline.contains("marks") && timeline["marks"].is_array()) return timeline["marks"];
   const std::vector<std::string> names = keyNames(root);
-  const int m = static_cast<int>(names.size());
-  const bool loop = flagOf(timeline, "loop", false);
   Json list = Json::array();
-  const int count = m == 0 ? 0 : std::max(m, 2) + (loop && m > 1 ? 1 : 0);
-  for (int k = 0; k < count; ++k) {
-    Json mark = Json{{"time", k}, {"key", names[static_cast<size_t>(k < m ? k : (loop ? 0 : m - 1))]}};
-    if (k + 1 < count) mark["ease"] = "ease-in-out";
-    list.push_back(std::move(mark));
+  if (!names.empty()) {
+    const Timeline plain = defaultTimeline(names, Timeline().fps(), flagOf(timeline, "loop", false));
+    for (size_t m = 0; m < plain.marks().size(); ++m) {
+      Json mark = Json{{"time", timeJson(plain.marks()[m].time)}, {"key", plain.marks()[m].label}};
+      if (m < plain.segments().size()) mark["ease"] = easingName(plain.segments()[m].easing.kind);
+      list.push_back(std::move(mark));
+    }
   }
   timeline["marks"] = std::move(list);
   return timeline["marks"];
@@ -53,11 +60,6 @@ void tidyLast(Json& list) {
   for (const char* field : {"ease", "blend", "spacing"}) list.back().erase(field);
 }
 
-Json timeJson(double time) {
-  if (!std::isfinite(time)) throw InputError("timeline: a mark's time must be a finite number of seconds");
-  const double rounded = std::round(time * 1e6) / 1e6;
-  return rounded == std::floor(rounded) && std::fabs(rounded) < 1e9 ? Json(static_cast<long long>(rounded)) : Json(rounded);
-}
 
 }  // namespace
 
@@ -67,7 +69,8 @@ void applyMarkEdit(Json& root, const SceneEdit& edit) {
           [&](const AddMark& e) {
             if (e.key.empty() == e.weights.empty())
               throw InputError("timeline: a new mark needs exactly one of a key and weights");
-            Json mark = Json{{"time", timeJson(e.time)}};
+            const Json time = timeJson(e.time);  // as written: the order and the clash below are the file's
+            Json mark = Json{{"time", time}};
             if (!e.key.empty()) {
               checkKey(root, e.key);
               mark["key"] = e.key;
@@ -84,8 +87,8 @@ void applyMarkEdit(Json& root, const SceneEdit& edit) {
               mark["weights"] = std::move(weights);
             }
             Json& list = marks(root);
-            const auto at = std::find_if(list.begin(), list.end(), [&](const Json& m) { return timeOf(m) >= e.time; });
-            if (at != list.end() && timeOf(*at) == timeJson(e.time).get<double>())
+            const auto at = std::find_if(list.begin(), list.end(), [&](const Json& m) { return timeOf(m) >= time.get<double>(); });
+            if (at != list.end() && timeOf(*at) == time.get<double>())
               throw InputError("timeline: mark " + std::to_string(at - list.begin() + 1) + " is at " + seconds(e.time) +
                                " already: move it, or add this mark at another time");
             const bool last = at == list.end();

@@ -4,6 +4,8 @@
 
 #include "core/error.h"
 #include "core/suggest.h"
+#include "scene/parameters.h"
+#include "scene/scene.h"
 
 #include <cmath>
 #include <sstream>
@@ -230,9 +232,9 @@ void applyKeyEdit(Json& root, const SceneEdit& edit) {
           },
           [&](const SetInteriorFeature& e) {
             checkName(e.name, "interior feature", true);
-            if (e.radius && !(*e.radius >= 0.5 && *e.radius <= 1000))
-              throw InputError("interior feature " + q(e.name) + ": radius " + std::to_string(*e.radius) +
-                               " is out of range [0.5, 1000] px");
+            if (e.radius && !(*e.radius >= kMinInteriorRadius && *e.radius <= kMaxInteriorRadius))
+              throw InputError("interior feature " + q(e.name) + ": radius " + shortestText(*e.radius) + " px is out of range [" +
+                               shortestText(kMinInteriorRadius) + ", " + shortestText(kMaxInteriorRadius) + "]");
             Json value = pointJson(e.at);
             if (e.radius) value = Json{{"at", value}, {"radius", pointJson({*e.radius, 0})[0]}};
             objectField(key(root, e.key), "interior_features")[e.name] = value;

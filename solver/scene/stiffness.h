@@ -18,12 +18,15 @@ struct StiffnessRegion {
   double kappa = 1;   // > 0
 };
 
+// px: the radii a stroke may have.
+constexpr double kMinStrokeRadius = 0.5, kMaxStrokeRadius = 1e4;
+
 // A brush stroke: every triangle within `radius` of the polyline takes `kappa`.
 struct StiffnessStroke {
   std::string name;
   int key = 0;        // the key it is drawn over
   Polyline points;    // >= 1 point, that key's drawing pixels
-  double radius = 4;  // px, >= 0.5
+  double radius = 4;  // px, in [kMinStrokeRadius, kMaxStrokeRadius]
   double kappa = 1;   // > 0
 };
 
