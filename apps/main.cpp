@@ -39,6 +39,7 @@ constexpr const char* kUsage =
     "  bench interp   benchmark the interpolation solver; one JSON object per case\n"
     "  bench comesh   benchmark Comesh Optimization; one JSON object per case\n"
     "  bench anim     benchmark playing every bundled scene's timeline; one JSON object per case\n"
+    "  bench mesh     benchmark building every bundled scene's multimesh; one JSON object per scene\n"
     ENGINE_COMMAND("  bench render   benchmark headless rendering (frames per second); one JSON object per case\n")
     ENGINE_COMMAND("  bench play     benchmark the player's window (fps, frame times, parameter latency); needs a display\n")
     "  bench cut      benchmark the solver through a cut letting go; one JSON object per case\n"

@@ -84,6 +84,17 @@ TEST_CASE("cli: bench anim with a missing assets folder exits 2") {
   CHECK_THAT(run.err, StartsWith("inbetween: bench anim: --assets: /nonexistent/assets is not a folder"));
 }
 
+TEST_CASE("cli: bench anim and mesh with an unknown --scenes name exit 2 naming the nearest scene and every one there") {
+  for (const std::string bench : {"anim", "mesh"}) {
+    const CommandRun run = inbetween({"bench", bench, "--assets", INBETWEEN_ASSETS, "--scenes", "square-arch-notch,flying-brid"});
+    INFO(run.output);
+    CHECK(run.code == 2);
+    CHECK(run.out.empty());
+    CHECK_THAT(run.err, StartsWith("inbetween: bench " + bench + ": --scenes: \"flying-brid\" is not a scene of ") &&
+                            Contains("(did you mean \"flying-bird\"?); the scenes there: ") && Contains("square-arch-notch"));
+  }
+}
+
 TEST_CASE("cli: bench cut with --frames 0 exits 2") {
   const CommandRun run = inbetween({"bench", "cut", "--frames", "0"});
   INFO(run.output);

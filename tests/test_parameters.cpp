@@ -121,8 +121,8 @@ TEST_CASE("parameter table: text as --set gives it reads back as the value it fo
              Catch::Contains("x: 0.5 is out of range on or off"));
   CHECK(parseParameterText(parameter("non_overlap"), "on", "--set") == 1);
   CHECK(parseParameterText(parameter("metric"), "per_key", "--set") == 1);
-  CHECK(parseParameterText(parameter("background"), "ff8800", "--set") == 0xff8800);
-  CHECK(parseParameterText(parameter("background"), "none", "--set") == -1);
+  CHECK(parseParameterText(parameter("paper_color"), "ff8800", "--set") == 0xff8800);
+  CHECK(parseParameterText(parameter("paper_color"), "none", "--set") == -1);
   CHECK(parseParameterText(parameter("edge_length"), "0", "--set") == 0);  // 0 follows the drawings
   CHECK_THAT(inputError([] { parseParameterText(parameter("edge_length"), "0.25", "--set"); }),
              Catch::Contains("0 (follow the drawings) or [0.5, 1e+06]"));
@@ -130,6 +130,8 @@ TEST_CASE("parameter table: text as --set gives it reads back as the value it fo
              Catch::Contains("whole numbers [1, 255]"));
   CHECK_THAT(inputError([] { parameter("lamda"); }), Catch::Contains("did you mean \"lambda\""));
   CHECK_THAT(inputError([] { parameter("gravity-y"); }), Catch::Contains("did you mean \"gravity_y\""));
+  CHECK_THAT(inputError([] { parameter("solver.tua"); }), Catch::Contains("did you mean \"solver.tau\""));
+  CHECK_THAT(inputError([] { parameter("dynamics.gravity.z"); }), Catch::Contains("did you mean \"dynamics.gravity.x\""));
   CHECK(&parameter("solver.tau") == &parameter("tau"));
   CHECK(&parameter("dynamics.gravity.y") == &parameter("gravity_y"));
 }

@@ -179,7 +179,12 @@ TEST_CASE("scene: a one-key scene loads with a note that the animation is a stil
 }
 
 TEST_CASE("scene: malformed JSON and a missing scene file are input errors naming the file") {
-  CHECK_THROWS_WITH(parseScene("{\"version\": 1,", "bad.json"), Catch::StartsWith("bad.json: malformed JSON"));
+  CHECK_THROWS_WITH(parseScene("{\"version\": 1,", "bad.json"), Catch::StartsWith("bad.json: malformed JSON at line 1, column 15: "));
+  // A comma missing between two points on line 3: the line, column and the text there.
+  CHECK_THROWS_WITH(parseScene("{\n  \"version\": 1,\n  \"features\": {\"a\": [1, 2] \"b\": [3, 4]}\n}", "bad.json"),
+                    Catch::StartsWith("bad.json: malformed JSON at line 3, column 30: syntax error while parsing object") &&
+                        Catch::Contains("there the text reads `\"features\": {\"a\": [1, 2] \"b\"") &&
+                        Catch::Contains("a missing or extra comma"));
   CHECK_THROWS_AS(loadScene("no-such-scene.json"), InputError);
   CHECK_THROWS_WITH(loadScene("no-such-scene.json"), Catch::Contains("no-such-scene.json"));
 }

@@ -161,6 +161,8 @@ TEST_CASE("timeline: every malformed field is an input error naming the file, th
       {R"({"marks": [{"time": 0, "weights": {"q": 1}}]})", "mark 1: weights: \"q\" is not a key"},
       {R"({"marks": [{"time": 0, "key": "a", "ease": "bounce"}, {"time": 1, "key": "b"}]})",
        "mark 1: ease: \"bounce\" is not an easing"},
+      {R"({"marks": [{"time": 0, "key": "a", "ease": "ease_in"}, {"time": 1, "key": "b"}]})",
+       "[x1, y1, x2, y2]}) (did you mean \"ease-in\"?)"},
       {R"({"marks": [{"time": 0, "key": "a", "ease": {"cubic_bezier": [0, 2, 1, 1]}}, {"time": 1, "key": "b"}]})",
        "mark 1: ease: cubic_bezier: every coordinate must be in [0, 1]"},
       {R"({"marks": [{"time": 0, "key": "a", "ease": {"cubic_bezier": [0, 1]}}, {"time": 1, "key": "b"}]})",

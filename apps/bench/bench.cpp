@@ -1,6 +1,7 @@
 #include "bench/bench.h"
 
 #include "core/error.h"
+#include "core/suggest.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -46,6 +47,30 @@ std::filesystem::path bundledAssets(const std::string& bench) {
     throw InputError("bench " + bench + ": no bundled scenes at " + assets.string() +
                      ": give --assets DIR, a folder of NAME/scene.json (the source tree's assets/)");
   return assets;
+}
+
+std::vector<std::filesystem::path> benchScenes(const std::filesystem::path& assets, const std::vector<std::string>& only,
+                                               const std::string& bench) {
+  namespace fs = std::filesystem;
+  if (!fs::is_directory(assets)) throw InputError("bench " + bench + ": --assets: " + assets.string() + " is not a folder");
+  std::vector<std::string> names;
+  for (const auto& entry : fs::directory_iterator(assets))
+    if (fs::exists(entry.path() / "scene.json")) names.push_back(entry.path().filename().string());
+  std::sort(names.begin(), names.end());
+  if (names.empty())
+    throw InputError("bench " + bench + ": --assets: no NAME/scene.json in " + assets.string() +
+                     ": give a folder of scene folders (the source tree's assets/)");
+  for (const std::string& name : only)
+    if (std::find(names.begin(), names.end(), name) == names.end()) {
+      std::string all;
+      for (const std::string& n : names) all += (all.empty() ? "" : ", ") + n;
+      throw InputError("bench " + bench + ": --scenes: " + inQuotes(name) + " is not a scene of " + assets.string() +
+                       didYouMean(name, names) + "; the scenes there: " + all);
+    }
+  std::vector<fs::path> scenes;
+  for (const std::string& name : names)
+    if (only.empty() || std::find(only.begin(), only.end(), name) != only.end()) scenes.push_back(assets / name / "scene.json");
+  return scenes;
 }
 
 void showStatus(const std::string& text) {

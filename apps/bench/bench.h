@@ -74,6 +74,12 @@ class StealMeter {
 // --assets.
 std::filesystem::path bundledAssets(const std::string& bench);
 
+// The scene files NAME/scene.json in `assets`, sorted by NAME; with `only` non-empty just those
+// NAMEs. InputError when `assets` is no folder, holds no scene, or a name in `only` is none of
+// them (naming the nearest and every scene there is).
+std::vector<std::filesystem::path> benchScenes(const std::filesystem::path& assets, const std::vector<std::string>& only,
+                                               const std::string& bench);
+
 // One line of status on stderr, rewritten in place, when stderr is a terminal; "" clears it.
 void showStatus(const std::string& text);
 

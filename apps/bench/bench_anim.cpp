@@ -116,17 +116,7 @@ void run(const cli::Arguments& a, const BenchOutput& output) {
   const bool contended = a.flag("contended");
   const int repeats = a.integer("repeats", contended ? 3 : 1, 1, 100);
   const std::vector<std::string> only = a.has("scenes") ? cli::wordList(a.value("scenes", ""), "--scenes") : std::vector<std::string>{};
-  if (!std::filesystem::is_directory(assets)) throw InputError("bench anim: --assets: " + assets.string() + " is not a folder");
-  std::vector<std::filesystem::path> scenes;
-  for (const auto& entry : std::filesystem::directory_iterator(assets)) {
-    const std::string name = entry.path().filename().string();
-    if (!std::filesystem::exists(entry.path() / "scene.json")) continue;
-    if (!only.empty() && std::find(only.begin(), only.end(), name) == only.end()) continue;
-    scenes.push_back(entry.path() / "scene.json");
-  }
-  std::sort(scenes.begin(), scenes.end());
-  if (scenes.empty()) throw InputError("bench anim: --assets: no NAME/scene.json in " + assets.string() +
-                                       (only.empty() ? "" : " among --scenes"));
+  const std::vector<std::filesystem::path> scenes = benchScenes(assets, only, "anim");
   std::optional<ContendedCore> busy;
   if (contended) busy.emplace();
   for (const auto& file : scenes) {

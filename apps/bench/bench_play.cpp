@@ -124,16 +124,8 @@ nlohmann::json benchScene(const std::filesystem::path& file, const play::PlayerW
 
 void run(const cli::Arguments& a, const BenchOutput& output) {
   const std::filesystem::path assets = a.has("assets") ? std::filesystem::path(a.value("assets", "")) : bundledAssets("play");
-  if (!std::filesystem::is_directory(assets)) throw InputError("bench play: --assets: " + assets.string() + " is not a folder");
-  std::vector<std::filesystem::path> files;
-  const std::string only = a.value("scenes", "");
-  for (const auto& entry : std::filesystem::directory_iterator(assets)) {
-    const std::string name = "," + entry.path().filename().string() + ",";
-    if (std::filesystem::exists(entry.path() / "scene.json") && (only.empty() || ("," + only + ",").find(name) != std::string::npos))
-      files.push_back(entry.path() / "scene.json");
-  }
-  std::sort(files.begin(), files.end());
-  if (files.empty()) throw InputError("bench play: no scene.json under " + assets.string() + (only.empty() ? "" : " named " + only));
+  const std::vector<std::string> only = a.has("scenes") ? cli::wordList(a.value("scenes", ""), "--scenes") : std::vector<std::string>{};
+  const std::vector<std::filesystem::path> files = benchScenes(assets, only, "play");
   play::PlayerWindowOptions options;
   const std::array<int, 2> size = parseSize(a.value("size", "1280x720"), "--size");
   options.width = size[0];

@@ -128,11 +128,7 @@ void run(const cli::Arguments& a, const BenchOutput& output) {
     scenes.push_back(a.value("scene", ""));
   } else {
     const std::filesystem::path assets = a.has("assets") ? std::filesystem::path(a.value("assets", "")) : bundledAssets("shape");
-    if (!std::filesystem::is_directory(assets)) throw InputError("bench shape: --assets: " + assets.string() + " is not a folder");
-    for (const auto& entry : std::filesystem::directory_iterator(assets))
-      if (std::filesystem::exists(entry.path() / "scene.json")) scenes.push_back(entry.path() / "scene.json");
-    std::sort(scenes.begin(), scenes.end());
-    if (scenes.empty()) throw InputError("bench shape: --assets: no NAME/scene.json in " + assets.string());
+    scenes = benchScenes(assets, {}, "shape");
   }
   const std::string metricName = a.value("metric", "both");
   std::vector<ShapeMetric> metrics;

@@ -13,8 +13,9 @@ namespace {
 // The epsilon the dynamics toggle turns on with when the scene has no dynamics: half the
 // compliance range, visible secondary motion without the largest swings.
 constexpr double kDefaultEpsilon = 0.5;
-// The lower end of a log slider whose range is open at 0 (tau, anchor): far below any value the
-// bundled scenes use (tau down to 1e-9); typed entry takes smaller ones.
+// The lower end of a log slider whose range is open at 0 (tau, anchor, gust_frequency,
+// max_deviation): far below any value the bundled scenes use (tau down to 1e-9); typed entry takes
+// smaller ones.
 constexpr double kLogFloor = 1e-12;
 
 Control control(const ParameterSpec& spec, double initial) {

@@ -1,6 +1,7 @@
 #include "animation/easing.h"
 
 #include "core/error.h"
+#include "core/suggest.h"
 
 #include <algorithm>
 #include <cmath>
@@ -69,7 +70,8 @@ Easing namedEasing(const std::string& name, const std::string& where) {
     e.bezier = {0.42, 0, 0.58, 1};
   } else {
     throw InputError(where + inQuotes(name) +
-                     " is not an easing (linear, ease-in, ease-out, ease-in-out, hold, or {\"cubic_bezier\": [x1, y1, x2, y2]})");
+                     " is not an easing (linear, ease-in, ease-out, ease-in-out, hold, or {\"cubic_bezier\": [x1, y1, x2, y2]})" +
+                     didYouMean(name, {"linear", "ease-in", "ease-out", "ease-in-out", "hold"}));
   }
   return e;
 }

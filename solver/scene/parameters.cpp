@@ -97,7 +97,7 @@ std::vector<ParameterSpec> makeTable() {
           .meaning("with alpha, a pixel is shape when its alpha is at least this").invalidates(I::kMultimesh)
           .access([](const Scene& s) { return double(s.tracing.alphaThreshold); },
                   [](Scene& s, double v) { s.tracing.alphaThreshold = static_cast<int>(v); }));
-  add(Row("background", "tracing.background").color()
+  add(Row("paper_color", "tracing.background").color()
           .meaning("the paper colour [r, g, b]: drawings without alpha are traced by colour against it (white when "
                    "none is given), and every drawing when it is given")
           .invalidates(I::kMultimesh)
@@ -260,7 +260,10 @@ const ParameterSpec* findParameter(const std::string& name) {
 const ParameterSpec& parameter(const std::string& name) {
   if (const ParameterSpec* spec = findParameter(name)) return *spec;
   std::vector<std::string> names;
-  for (const ParameterSpec& spec : parameterTable()) names.push_back(spec.name);
+  for (const ParameterSpec& spec : parameterTable()) {  // a name, or its field as the scene file spells it
+    names.push_back(spec.name);
+    if (!spec.field.empty()) names.push_back(spec.component < 0 ? spec.field : spec.field + (spec.component == 0 ? ".x" : ".y"));
+  }
   throw InputError("unknown parameter " + inQuotes(name) + didYouMean(name, names) +
                    " (every parameter: `inbetween parameters`, docs/parameters.md)");
 }

@@ -51,7 +51,10 @@ struct ParameterSpec {
   Invalidates invalidates = Invalidates::kSolve;
   bool live = false;        // a control in the player's window
   // The value in a parsed Scene, and setting it there; null for the player's own parameters
-  // (kappa_scale, dynamics), which no scene field holds.
+  // (kappa_scale, dynamics), which no scene field holds. `set` writes the field alone: a
+  // timeline setting (fps, loop, spacing) reaches Scene::timeline, and a multimesh field the
+  // multimesh, only when the scene is parsed and built again (as --set does, through the
+  // scene's document: scene/scene_document.h).
   double (*get)(const Scene&) = nullptr;
   void (*set)(Scene&, double) = nullptr;
 };

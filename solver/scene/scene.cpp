@@ -8,6 +8,7 @@
 #include "scene/scene_animation.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <functional>
@@ -275,6 +276,31 @@ int Scene::keyIndex(const std::string& name) const {
   return -1;
 }
 
+namespace {
+
+// nlohmann's syntax error said for a person: where (line, column) without the exception's code,
+// what was expected, and (unless nlohmann quotes what it last read) the text of that line around
+// the column, which is where to look, with the usual cause.
+std::string syntaxError(const json::parse_error& e, const std::string& source) {
+  std::string what = e.what();
+  const std::string at = "parse error at ";
+  if (const size_t p = what.find(at); p != std::string::npos) what = what.substr(p + at.size());
+  if (what.find("last read: ") != std::string::npos) return "malformed JSON at " + what;  // quotes the text itself
+  const size_t end = std::min(source.size(), static_cast<size_t>(e.byte));
+  const size_t lineStart = end == 0 ? 0 : source.rfind('\n', end - 1) + 1;  // npos + 1 = 0
+  const size_t lineEnd = std::min(source.find('\n', lineStart), source.size());
+  const size_t from = std::max(lineStart, end > 40 ? end - 40 : 0);
+  std::string excerpt = source.substr(from, std::min(lineEnd, end + 20) - from);
+  while (!excerpt.empty() && std::isspace(static_cast<unsigned char>(excerpt.front()))) excerpt.erase(0, 1);
+  while (!excerpt.empty() && std::isspace(static_cast<unsigned char>(excerpt.back()))) excerpt.pop_back();
+  for (char& c : excerpt)
+    if (static_cast<unsigned char>(c) < 32) c = ' ';
+  return "malformed JSON at " + what + (excerpt.empty() ? "" : "; there the text reads `" + excerpt + "`") +
+         " (a missing or extra comma, or an unquoted name, is the usual cause)";
+}
+
+}  // namespace
+
 Scene parseScene(const std::string& source, const std::string& path) {
   const Context at{std::filesystem::path(path).filename().string(), ""};
   // nlohmann's parser ends the text at a NUL byte; JSON text holds none, so neither does a scene.
@@ -284,7 +310,7 @@ Scene parseScene(const std::string& source, const std::string& path) {
   try {
     j = json::parse(source);
   } catch (const json::parse_error& e) {
-    throw at.error(std::string("malformed JSON: ") + e.what());
+    throw at.error(syntaxError(e, source));
   } catch (const json::out_of_range& e) {  // a number past the doubles (1e999)
     throw at.error(std::string("malformed JSON: a number too large for a double: ") + e.what());
   }
