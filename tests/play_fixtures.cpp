@@ -3,6 +3,7 @@
 #include "player/player_ui.h"
 #include "player/view_navigation.h"
 
+#include <atomic>
 #include <catch2/catch.hpp>
 #include <chrono>
 #include <cmath>
@@ -128,5 +129,59 @@ bool actUntil(const std::function<void()>& act, const std::function<bool()>& don
   return false;
 }
 
+LiveWindow::LiveWindow(const std::string& scene, int width, int height)
+    : session(std::make_unique<play::SceneReloader>(scene), {}) {
+  play::PlayerWindowOptions options;
+  options.width = width;
+  options.height = height;
+  options.validation = true;
+  options.device = vk::DevicePreference::kSoftware;
+  window = std::make_unique<play::PlayerWindow>(session, options);
+  REQUIRE(presentUntil(*window, [&] { return session.shown() != nullptr; }, 60));
+  REQUIRE(session.worker().waitIdle(60));
+  id = xdotool("search --name \"inbetween play - " + scene + "\" | head -n 1");
+  REQUIRE_FALSE(id.empty());
+  xdotool("windowfocus --sync " + id);
+  frames(5);
+}
+
+LiveWindow::~LiveWindow() {
+  const std::vector<std::string> messages = window->context().validationMessages();
+  INFO((messages.empty() ? std::string() : messages.front()));
+  CHECK(messages.empty());
+}
+
+void LiveWindow::frames(int count) {
+  for (int i = 0; i < count; ++i) {
+    window->frame();
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+}
+
+RgbaImage LiveWindow::shot(const std::string& name) {
+  RgbaImage image;
+  REQUIRE(presentUntil(*window, [&] { return window->frame(&image); }, 10));
+  writePng((fs::temp_directory_path() / ("inbetween-play-test-" + name + ".png")).string(), image);
+  return image;
+}
+
+void LiveWindow::send(const std::string& args) { xdotool(withId(args)); }
+
+void LiveWindow::sendWhilePresenting(const std::string& args) {
+  std::atomic<bool> sent{false};
+  std::thread input([&] {
+    xdotool(withId(args));
+    sent = true;
+  });
+  while (!sent) frames(1);
+  input.join();
+  frames(3);
+}
+
+std::string LiveWindow::withId(std::string args) const {
+  for (size_t at = args.find("--window"); at != std::string::npos; at = args.find("--window", at + 1))
+    args.insert(at + 8, " " + id);
+  return args;
+}
 
 }  // namespace playtest

@@ -1,6 +1,7 @@
-// What the player's window tests share (test_play.cpp, test_play_controls.cpp): scripted runs of
-// `inbetween play` and their screenshots compared with drawings and rendered frames through the
-// player's own layout, scene copies to edit, and real input through xdotool.
+// What the player's window tests share (test_play.cpp, test_play_controls.cpp, test_play_input.cpp):
+// scripted runs of `inbetween play` and their screenshots compared with drawings and rendered
+// frames through the player's own layout, scene copies to edit, real input through xdotool, and
+// a player window in the test's process to send it to (LiveWindow).
 #pragma once
 
 #include "core/png_image.h"
@@ -10,6 +11,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <memory>
 #include <string>
 
 namespace playtest {
@@ -54,5 +56,32 @@ std::string xdotool(const std::string& args);
 // Repeats `act` until `done` holds (true), at most `attempts` times, `done` polled for up to 5 s
 // after each: a window takes input once its first frames are drawn, which nothing announces.
 bool actUntil(const std::function<void()>& act, const std::function<bool()>& done, int attempts);
+
+// A player window in this process on `scene` (kWidth x kHeight unless said), on lavapipe with the
+// validation layer (silent, checked at the end), paused on frame 0 once it is solved and drawn,
+// with the keyboard's focus (no window manager runs under Xvfb: xdotool gives it). Real X input
+// sent to it by send() lands between two frames; the test reads what it changed from the session
+// and the UI.
+struct LiveWindow {
+  ib::play::PlayerSession session;
+  std::unique_ptr<ib::play::PlayerWindow> window;
+  std::string id;  // the X window, for xdotool
+
+  explicit LiveWindow(const std::string& scene, int width = kWidth, int height = kHeight);
+  ~LiveWindow();
+
+  // `count` frames, 20 ms apart: the X events sent before are taken in the first.
+  void frames(int count);
+  // The window as presented, UI included, also written to inbetween-play-test-NAME.png.
+  ib::RgbaImage shot(const std::string& name);
+  // `xdotool ARGS`, the window's id after every "--window", run to its end between two frames.
+  void send(const std::string& args);
+  // The same with frames presented meanwhile (a double-click needs a frame for each click), then
+  // 3 more.
+  void sendWhilePresenting(const std::string& args);
+
+ private:
+  std::string withId(std::string args) const;
+};
 
 }  // namespace playtest

@@ -1,17 +1,20 @@
 // The player's parameter controls under Xvfb: `--set` through the scripted window, the scene's
-// metric played as `inbetween render` draws it, Save parameters into the scene file, and the
-// controls driven with real input (xdotool).
+// metric played as `inbetween render` draws it, Save parameters into the scene file, the
+// controls driven with real input (xdotool), and their names laid out clear of the buttons.
 #include "animation/frame_stream.h"
 #include "core/atomic_file.h"
 #include "play_fixtures.h"
 #include "player/player_session.h"
 
+#include <algorithm>
 #include <atomic>
 #include <catch2/catch.hpp>
 #include <chrono>
+#include <cstdlib>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <thread>
+#include <vector>
 
 using namespace ib;
 using namespace playtest;
@@ -150,4 +153,59 @@ TEST_CASE("play: in the window, with real input, a typed slider value and a pick
   const size_t end = original.rfind('}');
   CHECK(readFile(file) == original.substr(0, end - 1) + ",\n  \"solver\": {\"tau\": 1e-09, \"metric\": \"per_key\"}\n}" +
                               original.substr(end + 1));
+}
+
+namespace {
+
+// The reset buttons ("R") down the side panel's right edge in a screenshot, each with the gap in
+// pixels between its left edge and the rightmost text pixel left of it on its rows (the parameter's
+// name; 0 when the name runs under the button).
+// A button's row: within 40 px of the window's right edge, a pixel of the disabled button's colour
+// followed by 14 more of it or of its letter; text: white pixels (a name at its default).
+std::vector<int> nameGaps(const RgbaImage& shot) {
+  const auto isButton = [&](int x, int y) {
+    const uint8_t* p = shot.at(x, y);
+    return std::abs(int(p[0]) - 47) <= 2 && std::abs(int(p[1]) - 49) <= 3 && std::abs(int(p[2]) - 56) <= 4;
+  };
+  const auto isLetter = [&](int x, int y) { return shot.at(x, y)[0] > 100; };
+  const auto isText = [&](int x, int y) {
+    const uint8_t* p = shot.at(x, y);
+    return p[0] > 200 && p[1] > 200 && p[2] > 200;
+  };
+  const int panel = shot.width - static_cast<int>(play::kSidePanelWidth);
+  std::vector<int> gaps;
+  int left = shot.width, text = panel;  // the button's left edge and its name's rightmost pixel so far
+  for (int y = 0; y < shot.height; ++y) {
+    int x0 = shot.width - 40;
+    while (x0 < shot.width - 15 && !isButton(x0, y)) ++x0;
+    bool button = x0 < shot.width - 15;
+    for (int x = x0; button && x < x0 + 15; ++x) button = isButton(x, y) || isLetter(x, y);
+    if (!button) {
+      if (left < shot.width) gaps.push_back(left - 1 - text);
+      left = shot.width, text = panel;
+      continue;
+    }
+    // A name drawn under the button shows only left of it: the edge is the leftmost of its rows.
+    left = std::min(left, x0);
+    for (int x = x0 - 1; x > text; --x)
+      if (isText(x, y)) text = x;
+  }
+  return gaps;
+}
+
+}  // namespace
+
+TEST_CASE("play: at the default window size every parameter's name, the longest unfolded too, stands clear of its "
+          "reset button", "[.window]") {
+  const play::PlayerWindowOptions defaults;
+  LiveWindow live(kScene, defaults.width, defaults.height);
+  // Unfold "gusts, settling, deviation budget" (gust_frequency, the longest name, is there).
+  live.sendWhilePresenting("mousemove --window " + std::to_string(defaults.width - 280) + " 435 click 1");
+  const RgbaImage shot = live.shot("parameters-unfolded");
+  const std::vector<int> gaps = nameGaps(shot);
+  CHECK(gaps.size() == live.session.parameters().all().size());
+  for (size_t i = 0; i < gaps.size(); ++i) {
+    INFO("row " << i << ": " << gaps[i] << " px between the name and its button");
+    CHECK(gaps[i] >= 4);
+  }
 }

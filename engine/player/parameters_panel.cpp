@@ -8,6 +8,7 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <string>
 
@@ -20,6 +21,23 @@ bool dynamicsControl(const Control& c) { return c.spec->name == "dynamics" || c.
 // The value as the table writes it, with its unit.
 std::string shown(const ParameterSpec& spec, double value) {
   return formatParameterValue(spec, value) + (spec.unit.empty() ? "" : " " + spec.unit);
+}
+
+// Where a row's parts sit, from the right edge of the panel's content: the reset button, then the
+// name column, as wide as the longest name shown (a long name never runs into the button).
+struct RowLayout {
+  float reset = 0;  // the reset button's width
+  float name = 0;   // from the name column's left edge to the content's right edge
+};
+
+RowLayout rowLayout(const std::vector<Control>& controls) {
+  const ImGuiStyle& style = ImGui::GetStyle();
+  float longest = 0;
+  for (const Control& c : controls) longest = std::max(longest, ImGui::CalcTextSize(c.spec->name.c_str()).x);
+  RowLayout layout;
+  layout.reset = ImGui::CalcTextSize("R").x + 2 * style.FramePadding.x;  // a SmallButton's width
+  layout.name = layout.reset + style.ItemSpacing.x + longest;
+  return layout;
 }
 
 // The popup that takes a typed value for `spec` (opened by the row): Enter sets it, as --set
@@ -43,11 +61,12 @@ void typedEntry(PlayerSession& session, UiState& ui, const ParameterSpec& spec) 
 
 // One row: the slider (checkbox, or choice) showing the value, and the default too once it has
 // moved; the name, in the accent colour when moved; a reset button.
-void parameterRow(PlayerSession& session, UiState& ui, const Control& c) {
+void parameterRow(PlayerSession& session, UiState& ui, const Control& c, const RowLayout& layout) {
   LiveParameters& params = session.parameters();
   const ParameterSpec& spec = *c.spec;
   ImGui::PushID(spec.name.c_str());
-  const float resetWidth = 22;
+  // The slider or choice fills the row up to the name column, a spacing short of it.
+  const float valueWidth = ImGui::GetContentRegionAvail().x - layout.name - ImGui::GetStyle().ItemSpacing.x;
   const bool moved = c.value != c.initial;
   bool changed = false;
   double value = c.value;
@@ -60,7 +79,7 @@ void parameterRow(PlayerSession& session, UiState& ui, const Control& c) {
       ImGui::TextDisabled("default %s", formatParameterValue(spec, c.initial).c_str());
     }
   } else if (spec.kind == ParameterKind::kChoice) {
-    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - 100 - resetWidth);
+    ImGui::SetNextItemWidth(valueWidth);
     if (ImGui::BeginCombo("##choice", formatParameterValue(spec, c.value).c_str())) {
       for (size_t i = 0; i < spec.choices.size(); ++i) {
         const bool selected = static_cast<size_t>(c.value) == i;
@@ -80,7 +99,7 @@ void parameterRow(PlayerSession& session, UiState& ui, const Control& c) {
     std::string format;
     for (const char ch : text) format += ch == '%' ? std::string("%%") : std::string(1, ch);
     double s = c.scale.toSlider(c.value);
-    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - 100 - resetWidth);
+    ImGui::SetNextItemWidth(valueWidth);
     changed = ImGui::SliderScalar("##value", ImGuiDataType_Double, &s, &c.sliderMin, &c.sliderMax, format.c_str(),
                                   ImGuiSliderFlags_NoInput | ImGuiSliderFlags_NoRoundToFormat);
     if (changed) value = c.scale.fromSlider(s);
@@ -97,10 +116,10 @@ void parameterRow(PlayerSession& session, UiState& ui, const Control& c) {
       session.messages().push_back({e.what(), true});
     }
   }
-  ImGui::SameLine(ImGui::GetWindowContentRegionMax().x - 94 - resetWidth);
+  ImGui::SameLine(ImGui::GetWindowContentRegionMax().x - layout.name);
   if (moved) ImGui::TextColored(ImVec4(0.96f, 0.70f, 0.35f, 1), "%s", spec.name.c_str());
   else ImGui::TextUnformatted(spec.name.c_str());
-  ImGui::SameLine(ImGui::GetWindowContentRegionMax().x - resetWidth);
+  ImGui::SameLine(ImGui::GetWindowContentRegionMax().x - layout.reset);
   if (!moved) ImGui::BeginDisabled();
   if (ImGui::SmallButton("R")) params.reset(spec.name);
   if (!moved) ImGui::EndDisabled();
@@ -115,9 +134,11 @@ void parametersPanel(PlayerSession& session, UiState& ui) {
   LiveParameters& params = session.parameters();
   // A copy: a row's change rewrites the list's values while it is walked.
   const std::vector<Control> all = params.all();
+  // One name column for every row, folded ones too: it stays put when the fold opens.
+  const RowLayout layout = rowLayout(all);
   ImGui::TextDisabled("Solver");
   for (const Control& c : all)
-    if (!dynamicsControl(c)) parameterRow(session, ui, c);
+    if (!dynamicsControl(c)) parameterRow(session, ui, c, layout);
   ImGui::Spacing();
   ImGui::TextDisabled("Dynamics");
   // The toggle first, then what shapes the motion; the gusts and the controller's budget folded
@@ -127,12 +148,12 @@ void parametersPanel(PlayerSession& session, UiState& ui) {
            c.spec->name == "max_deviation";
   };
   for (const Control& c : all)
-    if (c.spec->name == "dynamics") parameterRow(session, ui, c);
+    if (c.spec->name == "dynamics") parameterRow(session, ui, c, layout);
   for (const Control& c : all)
-    if (dynamicsControl(c) && c.spec->name != "dynamics" && !folded(c)) parameterRow(session, ui, c);
+    if (dynamicsControl(c) && c.spec->name != "dynamics" && !folded(c)) parameterRow(session, ui, c, layout);
   if (ImGui::TreeNode("gusts, settling, deviation budget")) {
     for (const Control& c : all)
-      if (folded(c)) parameterRow(session, ui, c);
+      if (folded(c)) parameterRow(session, ui, c, layout);
     ImGui::TreePop();
   }
   ImGui::Spacing();

@@ -33,12 +33,22 @@ void onDrop(GLFWwindow*, int count, const char** paths) {
   if (window) window->dropped(std::vector<std::string>(paths, paths + count));
 }
 
+void onKey(GLFWwindow* glfwWindow, int key, int scancode, int action, int mods) {
+  auto* window = static_cast<PlayerWindow*>(ImGui::GetIO().UserData);
+  if (window) window->keyEvent(glfwWindow, key, scancode, action, mods);
+}
+
+// Whether `button` was held down through the frame before too: not pressed just now.
+bool heldSinceLastFrame(ImGuiMouseButton button) { return ImGui::IsMouseDown(button) && !ImGui::IsMouseClicked(button); }
+
 }  // namespace
 
 PlayerWindow::PlayerWindow(PlayerSession& session, const PlayerWindowOptions& options) : session_(session) {
   presenter_ = std::make_unique<render::WindowPresenter>(session.renderMesh(), presenterOptions(options, session.scenePath()));
   imgui_ = std::make_unique<ImGuiLayer>(*presenter_, this);
   glfwSetDropCallback(presenter_->window().get(), &onDrop);
+  // After ImGui's: ours passes every key event on to ImGui's callback, then queues the presses.
+  previousKey_ = glfwSetKeyCallback(presenter_->window().get(), &onKey);
   last_ = std::chrono::steady_clock::now();
   samplingOverride_ = options.sampling;
   applySceneSampling(true);
@@ -53,6 +63,7 @@ void PlayerWindow::applySceneSampling(bool force) {
 
 PlayerWindow::~PlayerWindow() {
   glfwSetDropCallback(presenter_->window().get(), nullptr);
+  glfwSetKeyCallback(presenter_->window().get(), previousKey_);  // ImGui's again, for its shutdown
   // The UI's buffers and pipeline go before the presenter's device, once no frame uses them.
   try {
     presenter_->waitIdle();
@@ -63,6 +74,10 @@ PlayerWindow::~PlayerWindow() {
 
 void PlayerWindow::dropped(const std::vector<std::string>& paths) {
   if (!paths.empty()) dropped_.push_back(paths.front());
+}
+
+void PlayerWindow::keyEvent(GLFWwindow* window, int key, int scancode, int action, int mods) {
+  if (keys_.record({key, scancode, action, mods}) && previousKey_) previousKey_(window, key, scancode, action, mods);
 }
 
 bool PlayerWindow::shouldClose() const { return presenter_->window().shouldClose(); }
@@ -83,16 +98,18 @@ render::ViewBox PlayerWindow::contentBox() const {
 
 void PlayerWindow::handleInput(const render::ViewBox& content) {
   const ImGuiIO& io = ImGui::GetIO();
-  // Shortcuts unless a text field has the keyboard; each key once per press, repeating while held.
-  if (!io.WantTextInput)
-    for (int key = 0; key < IM_ARRAYSIZE(io.KeysDown); ++key)
-      if (ImGui::IsKeyPressed(key, true)) applyShortcut(key, io.KeyCtrl, session_, ui_);
+  // Shortcuts unless a text field has the keyboard (its keys are text, and dropped here): every
+  // press since the last frame in order, however short, repeating at the system's key repeat.
+  for (const KeyPress& press : keys_.take())
+    if (!io.WantTextInput) applyShortcut(press.key, press.ctrl, session_, ui_);
   if (ui_.closeRequested) glfwSetWindowShouldClose(presenter_->window().get(), GLFW_TRUE);
   if (io.WantCaptureMouse || !ui_.canvas.contains(io.MousePos.x, io.MousePos.y)) return;
   if (io.MouseWheel != 0)
     ui_.navigation.zoomAt(std::pow(1.15, io.MouseWheel), io.MousePos.x, io.MousePos.y, content, ui_.canvas, ui_.width,
                           ui_.height);
-  if (ImGui::IsMouseDragging(ImGuiMouseButton_Left, 0) || ImGui::IsMouseDragging(ImGuiMouseButton_Middle, 0))
+  // The picture follows the pointer while a button is held. Not on the frame the button goes
+  // down: the pointer's move since the last frame came before the press (a click would jump).
+  if (heldSinceLastFrame(ImGuiMouseButton_Left) || heldSinceLastFrame(ImGuiMouseButton_Middle))
     ui_.navigation.drag(io.MouseDelta.x, io.MouseDelta.y, content, ui_.canvas, ui_.width, ui_.height);
 }
 
@@ -104,6 +121,9 @@ void PlayerWindow::panels() {
 }
 
 bool PlayerWindow::frame(RgbaImage* capture) {
+  // Releases held back from the frame before reach ImGui first, then this frame's events.
+  for (const KeyEvent& e : keys_.nextFrame())
+    if (previousKey_) previousKey_(presenter_->window().get(), e.key, e.scancode, e.action, e.mods);
   vk::pollWindowEvents();
   const auto now = std::chrono::steady_clock::now();
   const double seconds = std::chrono::duration<double>(now - last_).count();

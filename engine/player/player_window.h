@@ -5,6 +5,7 @@
 #pragma once
 
 #include "player/imgui_layer.h"
+#include "player/key_queue.h"
 #include "player/player_session.h"
 #include "player/player_ui.h"
 #include "renderers/window_presenter.h"
@@ -14,6 +15,8 @@
 #include <optional>
 #include <string>
 #include <vector>
+
+struct GLFWwindow;
 
 namespace ib::play {
 
@@ -49,6 +52,10 @@ class PlayerWindow {
   const vk::VulkanContext& context() const { return presenter_->context(); }
   // Called by GLFW's drop callback: the first dropped file opens (in the next frame).
   void dropped(const std::vector<std::string>& paths);
+  // Called by GLFW's key callback: queues a press for the shortcuts of the next frame and passes
+  // the event on to the callback installed before (Dear ImGui's), a quick tap's release a frame
+  // later (KeyQueue).
+  void keyEvent(GLFWwindow* window, int key, int scancode, int action, int mods);
 
  private:
   void handleInput(const render::ViewBox& content);
@@ -65,6 +72,8 @@ class PlayerWindow {
   UiState ui_;
   std::chrono::steady_clock::time_point last_;
   std::vector<std::string> dropped_;
+  KeyQueue keys_;  // presses since the last frame, for the shortcuts; releases held back for ImGui
+  void (*previousKey_)(GLFWwindow*, int, int, int, int) = nullptr;  // GLFW's key callback before ours
   bool laidOut_ = false;  // the first frame's layout passes are done
   int laidOutFrames_ = 0;  // frames presented or skipped so far
   std::optional<render::Sampling> samplingOverride_;  // PlayerWindowOptions::sampling
