@@ -9,6 +9,7 @@
 #include "pipeline/scene_frames.h"
 #include "pipeline/scene_multimesh.h"
 #include "scene/scene.h"
+#include "testkit/shared_results.h"
 
 #include <catch2/catch.hpp>
 #include <filesystem>
@@ -26,15 +27,12 @@ const std::vector<std::string> kExamples = {
 
 std::string exampleFile(const std::string& name) { return std::string(INBETWEEN_ASSETS) + "/" + name + "/scene.json"; }
 
-// Built from the drawings (no cache) with Comesh Optimization, once per example and process.
-const SceneMultimesh& optimized(const std::string& name) {
-  static std::map<std::string, SceneMultimesh> built;
+// Built from the drawings (no cache) with Comesh Optimization, once per example and build of this
+// program (test::bundledMultimesh), read once per process.
+const ::test::BundledBuild& optimized(const std::string& name) {
+  static std::map<std::string, ::test::BundledBuild> built;
   auto found = built.find(name);
-  if (found == built.end()) {
-    SceneMultimeshOptions options;
-    options.useCache = false;
-    found = built.emplace(name, sceneMultimesh(loadScene(exampleFile(name)), options)).first;
-  }
+  if (found == built.end()) found = built.emplace(name, ::test::bundledMultimesh(loadScene(exampleFile(name)), name)).first;
   return found->second;
 }
 

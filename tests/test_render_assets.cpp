@@ -1,13 +1,15 @@
 #include "core/plane_geometry.h"
 #include "interpolation/interpolator.h"
-#include "pipeline/scene_multimesh.h"
+#include "multimesh/multimesh.h"
 #include "render_fixtures.h"
 #include "renderers/offscreen_renderer.h"
 #include "scene/scene.h"
 #include "testkit/example_scenes.h"
+#include "testkit/shared_results.h"
 #include "vulkan_fixtures.h"
 
 #include <catch2/catch.hpp>
+#include <filesystem>
 #include <map>
 #include <string>
 
@@ -27,20 +29,17 @@ bool neighbourhood(const RgbaImage& image, int x, int y, int radius, Test alphaT
   return true;
 }
 
-// A bundled scene's multimesh as the front ends build it (Comesh Optimization on, no cache) with
-// its drawings, and one frame's target for key k.
+// A bundled scene's multimesh as the front ends build it (Comesh Optimization on, no cache; shared
+// by this program's test cases, test::bundledMultimesh) with its drawings, and one frame's target
+// for key k.
 struct BundledScene {
   Scene scene;
   Multimesh mesh;
   std::vector<RgbaImage> drawings;  // [key]
 
-  static SceneMultimeshOptions uncached() {
-    SceneMultimeshOptions options;
-    options.useCache = false;
-    return options;
-  }
   explicit BundledScene(const std::string& file)
-      : scene(loadScene(file)), mesh(*sceneMultimesh(scene, uncached()).multimesh) {
+      : scene(loadScene(file)),
+        mesh(*::test::bundledMultimesh(scene, std::filesystem::path(file).parent_path().filename().string()).multimesh) {
     for (const KeySpec& key : scene.keys) drawings.push_back(readPng(key.drawing));
   }
   // Key k's drawing size, showing its drawing's rectangle.

@@ -4,14 +4,16 @@
 #include "core/plane_geometry.h"
 #include "interpolation/interpolator.h"
 #include "pipeline/scene_frames.h"
-#include "pipeline/scene_multimesh.h"
+#include "multimesh/multimesh.h"
 #include "render_fixtures.h"
 #include "renderers/offscreen_renderer.h"
 #include "scene/scene.h"
 #include "testkit/example_scenes.h"
+#include "testkit/shared_results.h"
 #include "vulkan_fixtures.h"
 
 #include <catch2/catch.hpp>
+#include <filesystem>
 
 using namespace ib;
 using namespace ib::render;
@@ -62,10 +64,9 @@ TEST_CASE("render: every frame of every bundled scene is opaque more than 1.5 px
   int framesChecked = 0;
   for (const std::string& file : ::test::bundledSceneFiles(INBETWEEN_ASSETS)) {
     const Scene scene = loadScene(file);
-    SceneMultimeshOptions meshOptions;
-    meshOptions.useCache = false;
-    const SceneMultimesh built = sceneMultimesh(scene, meshOptions);
-    const Multimesh& mesh = *built.multimesh;
+    const std::shared_ptr<const Multimesh> built =
+        ::test::bundledMultimesh(scene, std::filesystem::path(file).parent_path().filename().string()).multimesh;
+    const Multimesh& mesh = *built;
     std::vector<RgbaImage> drawings, blank;  // blank: opaque white, whose render is the mesh's coverage
     for (const KeySpec& key : scene.keys) {
       drawings.push_back(readPng(key.drawing));

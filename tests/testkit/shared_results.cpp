@@ -1,6 +1,8 @@
 #include "testkit/shared_results.h"
 
 #include "core/atomic_file.h"
+#include "multimesh/multimesh_io.h"
+#include "pipeline/scene_multimesh.h"
 
 using ib::writeFileAtomically;
 
@@ -70,6 +72,33 @@ std::string sharedResult(const std::string& name, const std::function<std::strin
   const std::string bytes = compute();
   writeFileAtomically(file.string(), bytes);
   return bytes;
+}
+
+BundledBuild bundledMultimesh(const ib::Scene& scene, const std::string& name) {
+  // The notes first, each as its length in bytes, a newline and its text; then the .ibmesh bytes.
+  const std::string bytes = sharedResult("bundled-" + name + ".ibmesh", [&] {
+    ib::SceneMultimeshOptions options;
+    options.useCache = false;
+    const ib::SceneMultimesh built = ib::sceneMultimesh(scene, options);
+    std::string out = std::to_string(built.notes.size()) + "\n";
+    for (const std::string& note : built.notes) out += std::to_string(note.size()) + "\n" + note;
+    return out + ib::encodeMultimesh(*built.multimesh);
+  });
+  BundledBuild build;
+  size_t at = 0;
+  const auto number = [&] {
+    const size_t end = bytes.find('\n', at);
+    const size_t n = std::stoul(bytes.substr(at, end - at));
+    at = end + 1;
+    return n;
+  };
+  for (size_t count = number(); count > 0; --count) {
+    const size_t size = number();
+    build.notes.push_back(bytes.substr(at, size));
+    at += size;
+  }
+  build.multimesh = std::make_shared<const ib::Multimesh>(ib::decodeMultimesh(bytes.substr(at), "the shared multimesh of " + name));
+  return build;
 }
 
 }  // namespace test

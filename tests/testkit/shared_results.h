@@ -7,12 +7,28 @@
 #pragma once
 
 #include <functional>
+#include <memory>
 #include <string>
+#include <vector>
+
+namespace ib {
+class Multimesh;
+struct Scene;
+}  // namespace ib
 
 namespace test {
 
 // The bytes `compute` returns for `name` (a file name: letters, digits, '-', '.'), computed at
 // most once per test program build on this machine.
 std::string sharedResult(const std::string& name, const std::function<std::string()>& compute);
+
+// A bundled scene's multimesh as `inbetween mesh` builds it (Comesh, never from a cache) and the
+// build's notes, built once per test program build and shared: the test cases that walk every
+// bundled scene read it. `name`: the scene's folder name, unique among the bundled scenes.
+struct BundledBuild {
+  std::shared_ptr<const ib::Multimesh> multimesh;  // never null
+  std::vector<std::string> notes;                  // SceneMultimesh::notes
+};
+BundledBuild bundledMultimesh(const ib::Scene& scene, const std::string& name);
 
 }  // namespace test
