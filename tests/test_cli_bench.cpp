@@ -163,6 +163,29 @@ TEST_CASE("cli: bench shape prints a JSON line per scene and metric") {
   }
 }
 
+TEST_CASE("cli: bench pops prints a JSON line per moving segment, and finds square-arch-notch's notch letting go") {
+  const std::vector<Json> lines = benchLines({"bench", "pops", "--scenes", "square-arch-notch"});
+  // Two segments (square -> arch -> square), the notch opening on the way out, glued on the way back.
+  REQUIRE(lines.size() == 2);
+  CHECK(lines[0].at("from") == "square");
+  CHECK(lines[0].at("to") == "arch");
+  CHECK(lines[1].at("from") == "arch");
+  CHECK(lines[1].at("to") == "square");
+  CHECK_FALSE(lines[0].at("releases").empty());
+  CHECK_FALSE(lines[1].at("glues").empty());
+  for (const Json& line : lines) {
+    INFO(line.dump());
+    CHECK(line.at("scene") == "square-arch-notch");
+    CHECK(line.at("cuts") == 1);
+    CHECK(line.at("steps") == 24);
+    CHECK(line.at("pop").get<double>() >= 1);
+    CHECK(line.at("rms_pop").get<double>() >= 1);
+    CHECK(line.at("pop_share").get<double>() > 0);
+    CHECK(line.at("min_area_ratio").get<double>() > 0.5);
+    CHECK(line.at("min_area_ratio").get<double>() <= 1.001);
+  }
+}
+
 TEST_CASE("cli: bench examples prints the paper's two tables for one example") {
   const std::vector<Json> lines = benchLines({"bench", "examples", "--only", "walk-star"});
   REQUIRE(lines.size() == 2);

@@ -84,7 +84,7 @@ std::vector<Benchmark> benchmarks() {
 #ifdef INBETWEEN_WITH_ENGINE
           renderBenchmark(), playBenchmark(),
 #endif
-          cutBenchmark(), shapeBenchmark(), examplesBenchmark()};
+          cutBenchmark(), popsBenchmark(), shapeBenchmark(), examplesBenchmark()};
 }
 
 std::string usage(const std::vector<Benchmark>& all) {

@@ -46,6 +46,7 @@ Benchmark renderBenchmark();
 Benchmark playBenchmark();
 #endif
 Benchmark cutBenchmark();
+Benchmark popsBenchmark();
 Benchmark shapeBenchmark();
 Benchmark examplesBenchmark();
 
