@@ -183,6 +183,8 @@ TEST_CASE("cli: bench pops prints a JSON line per moving segment, and finds squa
     CHECK(line.at("pop_share").get<double>() > 0);
     CHECK(line.at("min_area_ratio").get<double>() > 0.5);
     CHECK(line.at("min_area_ratio").get<double>() <= 1.001);
+    CHECK(line.at("pixel_steps").size() == 24);
+    CHECK(line.at("rms_steps").size() == 24);
   }
 }
 

@@ -71,6 +71,10 @@ TEST_CASE("frame changes: one jump in an evenly moving segment is its largest st
   CHECK(s.medianPixels == 20);   // a 1 px move of a 10 x 10 square: a column in, a column out
   CHECK(s.maxPixels == 200);     // moved past itself: all 100 out, 100 in
   CHECK(s.maxPixelsShare == Approx(2.0));
+  REQUIRE(s.pixelSteps.size() == 10);
+  CHECK(s.pixelSteps[5] == 200);  // the step onto frame 6
+  CHECK(s.rmsSteps[5] == Approx(20));
+  CHECK(s.rmsSteps[0] == Approx(1));
   CHECK(s.releases == std::vector<int>{6});
   CHECK(s.glues.empty());
   CHECK(s.minAreaRatio == Approx(1));  // every frame is the keys' square

@@ -27,7 +27,8 @@ constexpr const char* kUsage =
     "pop_frame, pop_share (that step's changed pixels over the silhouette before it), and the same\n"
     "for the vertex RMS move, rms_pop and rms_pop_frame; min_area_ratio (a frame's area over the\n"
     "area interpolated between the keys, sum_k w_k area(X_k)) and its frame; releases and glues (the\n"
-    "frames where fewer or more cohesive pairs hold than on the frame before). A smooth segment has\n"
+    "frames where fewer or more cohesive pairs hold than on the frame before); pixel_steps and rms_steps,\n"
+    "every step's changed pixels and RMS move (px) from the first frame on. A smooth segment has\n"
     "pops near 1 (eased timing makes them up to about 2).\n"
     "\n"
     "  --assets DIR    folder of scenes, each DIR/NAME/scene.json (default: the bundled scenes)\n"
@@ -85,7 +86,9 @@ void run(const cli::Arguments& a, const BenchOutput& output) {
                         {"min_area_ratio", s.minAreaRatio},
                         {"min_area_frame", s.minAreaFrame},
                         {"releases", s.releases},
-                        {"glues", s.glues}});
+                        {"glues", s.glues},
+                        {"pixel_steps", s.pixelSteps},
+                        {"rms_steps", s.rmsSteps}});
     }
   }
 }

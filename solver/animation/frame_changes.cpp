@@ -87,6 +87,8 @@ std::vector<SegmentChanges> segmentChanges(const Multimesh& mesh, const Timeline
     if (!current) return;
     current->medianPixels = median(pixels);
     current->medianRms = median(rms);
+    current->pixelSteps = pixels;
+    current->rmsSteps = rms;
     pixels.clear();
     rms.clear();
   };

@@ -31,6 +31,8 @@ struct SegmentChanges {
   // The smallest area of a frame over the area interpolated between the keys, sum_k w_k area(X_k).
   double minAreaRatio = 1;
   int minAreaFrame = 0;
+  // Every step's changed pixels and RMS move, in frame order (f = firstFrame + 1 + index).
+  std::vector<double> pixelSteps, rmsSteps;
   // Frames f whose held cohesive pairs are fewer (releases) or more (glues) than frame f-1's.
   std::vector<int> releases, glues;
 };
