@@ -124,6 +124,12 @@ std::array<int, 2> frameRange(const std::string& text, const std::string& option
   return range;
 }
 
+void checkFramesInTimeline(const std::array<int, 2>& frames, int frameCount) {
+  if (frames[1] >= frameCount)
+    throw InputError("--frames: the timeline has frames 0.." + std::to_string(frameCount - 1) + ", asked for " +
+                     std::to_string(frames[0]) + ".." + std::to_string(frames[1]) + ": ask for frames within it");
+}
+
 double positiveNumber(const std::string& text, const std::string& option, double max, const std::string& what) {
   char* end = nullptr;
   const double value = std::strtod(text.c_str(), &end);

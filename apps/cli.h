@@ -48,6 +48,10 @@ std::vector<std::string> wordList(const std::string& text, const std::string& op
 // "A:B" (inclusive, A <= B) or "A", both whole numbers >= 0, for option `option` (named in errors).
 std::array<int, 2> frameRange(const std::string& text, const std::string& option);
 
+// InputError for --frames `frames` reaching past a timeline of `frameCount` frames: checked
+// before the long work, so a wrong range fails fast.
+void checkFramesInTimeline(const std::array<int, 2>& frames, int frameCount);
+
 // A finite number in (0, max], for option `option` (named in errors, with `what` it is, e.g.
 // "a frame rate").
 double positiveNumber(const std::string& text, const std::string& option, double max, const std::string& what);

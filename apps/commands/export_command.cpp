@@ -98,10 +98,7 @@ int runExport(const std::vector<std::string>& rawArgs) {
   job.gltf.sampling = nearestSampling(scene, drawings) ? render::Sampling::kNearest : render::Sampling::kLinear;
   job.frames = arguments.has("frames") ? cli::frameRange(arguments.value("frames", ""), "--frames")
                                        : std::array<int, 2>{0, scene.timeline.frameCount() - 1};
-  if (job.frames[1] >= scene.timeline.frameCount())  // before the long work: fail fast
-    throw InputError("--frames: the timeline has frames 0.." + std::to_string(scene.timeline.frameCount() - 1) +
-                     ", asked for " + std::to_string(job.frames[0]) + ".." +
-                     std::to_string(job.frames[1]) + ": ask for frames within it");
+  cli::checkFramesInTimeline(job.frames, scene.timeline.frameCount());
   job.name = fs::path(scene.file).parent_path().filename().string();
   if (job.name.empty() || job.name == "." || job.name == "..") job.name = fs::path(scene.file).stem().string();
   const fs::path parent = fs::path(output).parent_path();

@@ -64,9 +64,7 @@ std::string describeSource(const SceneMultimesh& mesh) {
 
 // --frames within the timeline, --sheet-frames within --frames.
 void checkFrames(const std::array<int, 2>& frames, const std::vector<int>& sheetFrames, int frameCount) {
-  if (frames[1] >= frameCount)
-    throw InputError("--frames: the timeline has frames 0.." + std::to_string(frameCount - 1) + ", asked for " +
-                     std::to_string(frames[0]) + ".." + std::to_string(frames[1]) + ": ask for frames within it");
+  cli::checkFramesInTimeline(frames, frameCount);
   for (const int f : sheetFrames)
     if (f < frames[0] || f > frames[1])
       throw InputError("--sheet-frames: frame " + std::to_string(f) + " is not rendered (frames " + std::to_string(frames[0]) +

@@ -82,15 +82,10 @@ std::vector<SegmentChanges> segmentChanges(const Multimesh& mesh, const Timeline
   const auto& marks = timeline.marks();
   std::vector<char> previous = silhouetteMask(mesh, frames.front().x, origin, width, height);
   SegmentChanges* current = nullptr;
-  std::vector<double> pixels, rms;
   const auto close = [&] {
     if (!current) return;
-    current->medianPixels = median(pixels);
-    current->medianRms = median(rms);
-    current->pixelSteps = pixels;
-    current->rmsSteps = rms;
-    pixels.clear();
-    rms.clear();
+    current->medianPixels = median(current->pixelSteps);
+    current->medianRms = median(current->rmsSteps);
   };
   for (size_t f = 1; f < frames.size(); ++f) {
     const AnimationFrame& a = frames[f - 1];
@@ -117,8 +112,8 @@ std::vector<SegmentChanges> segmentChanges(const Multimesh& mesh, const Timeline
         area += previous[i];
       }
       const double move = std::sqrt((b.x - a.x).rowwise().squaredNorm().mean());
-      pixels.push_back(static_cast<double>(changed));
-      rms.push_back(move);
+      current->pixelSteps.push_back(static_cast<double>(changed));
+      current->rmsSteps.push_back(move);
       ++current->steps;
       if (changed > current->maxPixels) {
         current->maxPixels = static_cast<double>(changed);

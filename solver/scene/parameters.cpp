@@ -221,7 +221,6 @@ std::vector<ParameterSpec> makeTable() {
   return t;
 }
 
-
 std::string choiceList(const ParameterSpec& spec) {
   std::string list;
   for (size_t i = 0; i < spec.choices.size(); ++i) {
@@ -268,7 +267,7 @@ const ParameterSpec& parameter(const std::string& name) {
                    " (every parameter: `inbetween parameters`, docs/parameters.md)");
 }
 
-void checkParameterValue(const ParameterSpec& spec, double value, const std::string& where) {
+bool parameterValueValid(const ParameterSpec& spec, double value) {
   bool ok = std::isfinite(value);
   switch (spec.kind) {
     case K::kToggle: ok = ok && (value == 0 || value == 1); break;
@@ -281,7 +280,11 @@ void checkParameterValue(const ParameterSpec& spec, double value, const std::str
       ok = ok && ((spec.zeroIsAuto && value == 0) || ((spec.minOpen ? value > spec.min : value >= spec.min) && value <= spec.max));
       break;
   }
-  if (!ok)
+  return ok;
+}
+
+void checkParameterValue(const ParameterSpec& spec, double value, const std::string& where) {
+  if (!parameterValueValid(spec, value))
     throw InputError(where + ": " + (std::isfinite(value) ? formatParameterValue(spec, value) : shortestText(value)) +
                      " is out of range " + formatParameterRange(spec));
 }

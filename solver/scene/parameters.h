@@ -69,6 +69,9 @@ const ParameterSpec* findParameter(const std::string& name);
 // where the list is.
 const ParameterSpec& parameter(const std::string& name);
 
+// Whether `value` is one the parameter takes (finite, in its range; a choice's index, a toggle's
+// 0 or 1, a colour's RRGGBB or -1).
+bool parameterValueValid(const ParameterSpec& spec, double value);
 // InputError unless `value` is one the parameter takes; `where` starts the message (e.g.
 // `--set "tau=0"` or `scene.json: solver: tau`).
 void checkParameterValue(const ParameterSpec& spec, double value, const std::string& where);

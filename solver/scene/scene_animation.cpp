@@ -68,7 +68,7 @@ StiffnessPaint parseStiffness(const json& j, const Context& at, const std::vecto
   if (j.contains("range")) {
     const Eigen::Vector2d range = point(j["range"], at.in("range"), "as [soft, stiff] kappa");
     const ParameterSpec& kappa = parameter("kappa");
-    if (!(range(0) > kappa.min && range(1) > range(0) && range(1) <= kappa.max))
+    if (!(parameterValueValid(kappa, range(0)) && parameterValueValid(kappa, range(1)) && range(1) > range(0)))
       throw at.in("range").error("needs 0 < soft < stiff <= 1e6, each in kappa's range " + formatParameterRange(kappa));
     paint.soft = range(0);
     paint.stiff = range(1);

@@ -98,7 +98,7 @@ Json scaledKappa(const Json& kappa, double factor, const std::string& where) {
   if (!kappa.is_number()) throw InputError(where + ": must be a number to scale by " + std::to_string(factor));
   const double value = kappa.get<double>() * factor;
   const ParameterSpec& range = parameter("kappa");
-  if (!(value > range.min && value <= range.max))
+  if (!parameterValueValid(range, value))
     throw InputError(where + ": scaling by " + std::to_string(factor) + " takes it out of " + formatParameterRange(range));
   return std::floor(value) == value && value < 1e15 ? Json(static_cast<long long>(value)) : Json(value);
 }

@@ -60,7 +60,6 @@ void tidyLast(Json& list) {
   for (const char* field : {"ease", "blend", "spacing"}) list.back().erase(field);
 }
 
-
 }  // namespace
 
 void applyMarkEdit(Json& root, const SceneEdit& edit) {
