@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <tuple>
 
 namespace ib {
 
@@ -18,6 +20,50 @@ CohesiveEnergy::CohesiveEnergy(const Multimesh& mesh, const std::vector<Eigen::M
       term.restDirection = edge / term.restLength;
       terms_.push_back(term);
     }
+  std::map<std::tuple<int, int, int, int>, std::vector<char>> closed;
+  for (const CohesiveTerm& t : terms_) {
+    std::vector<char>& keysClosing = closed[{t.pair.a, t.pair.b, t.pair.c, t.pair.d}];
+    keysClosing.resize(mesh.keyCount(), 0);
+    keysClosing[t.key] = 1;
+  }
+  for (CohesiveTerm& t : terms_) t.closedIn = closed[{t.pair.a, t.pair.b, t.pair.c, t.pair.d}];
+}
+
+namespace {
+
+// The open keys' total weight for a term: sum of w_k over the keys that do not close its pair.
+double openWeight(const CohesiveTerm& t, const Eigen::VectorXd& w) {
+  double open = 0;
+  for (Eigen::Index k = 0; k < w.size(); ++k)
+    if (!t.closedIn[k]) open += w(k);
+  return open;
+}
+
+}  // namespace
+
+double releaseRamp(double openWeight, const CohesiveParams& params) {
+  const double lo = std::max(0.0, params.release - 0.5 * params.releaseWindow);
+  const double hi = std::min(1.0, params.release + 0.5 * params.releaseWindow);
+  if (openWeight <= lo) return 1;
+  if (openWeight >= hi) return 0;
+  const double u = (openWeight - lo) / (hi - lo);
+  return 1 - u * u * (3 - 2 * u);
+}
+
+double CohesiveEnergy::termWeight(int term, const Eigen::VectorXd& w) const {
+  const CohesiveTerm& t = terms_[term];
+  const double weight = w(t.key);
+  if (params_.timing == CutTiming::kTau || weight <= 0) return weight;
+  return weight * releaseRamp(openWeight(t, w), params_);
+}
+
+double CohesiveEnergy::ramp(int term, const Eigen::VectorXd& w) const {
+  return params_.timing == CutTiming::kTau ? 1.0 : releaseRamp(openWeight(terms_[term], w), params_);
+}
+
+bool CohesiveEnergy::glued(int term, const Eigen::VectorXd& w) const {
+  const CohesiveTerm& t = terms_[term];
+  return w(t.key) > 0 && releaseRamp(openWeight(t, w), params_) == 1;
 }
 
 double CohesiveEnergy::springConstant(int term) const {
@@ -30,7 +76,7 @@ double CohesiveEnergy::evaluate(const Eigen::MatrixX2d& x, const Eigen::VectorXd
   double energy = 0;
   for (size_t j = 0; j < terms_.size(); ++j) {
     const CohesiveTerm& t = terms_[j];
-    const double weight = w(t.key);
+    const double weight = termWeight(static_cast<int>(j), w);
     if (weight <= 0) continue;
     const CohesivePair& p = t.pair;
     const Eigen::Vector2d u = (x.row(p.a) - x.row(p.c)).transpose();
@@ -43,7 +89,7 @@ double CohesiveEnergy::evaluate(const Eigen::MatrixX2d& x, const Eigen::VectorXd
     const Eigen::Vector2d Pu = P * u, Pv = P * v;
     const double scale = t.restLength / 3.0 * params_.lambda;
     const double q = scale * (u.dot(Pu) + u.dot(Pv) + v.dot(Pv));
-    if (q < params_.tau) {
+    if (q < params_.tau || params_.timing == CutTiming::kRelease) {
       held[j] = 1;
       energy += weight * q;
       const Eigen::Vector2d gu = weight * scale * (2.0 * Pu + Pv);

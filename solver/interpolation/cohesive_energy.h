@@ -6,7 +6,8 @@
 // holds an isotropic spring that majorizes it). The gradient is the exact one, including the
 // dependence of xhat on x: with xhat frozen (as the paper's iteration treats it) the gradient
 // is not rotation invariant and carries a net torque, so a rotation-gauged solve could not
-// drive it to zero. A pair is *held* while l/3 d < tau; a clamped pair costs tau and exerts
+// drive it to zero. A pair is *held* while l/3 d < tau (under CutTiming::kRelease: while its
+// term weight, the release ramp, is above 0); a clamped pair costs tau and exerts
 // no force.
 #pragma once
 
@@ -19,11 +20,17 @@
 
 namespace ib {
 
+// CutTiming::kRelease: the share of a cut's closing pull at the open keys' total weight o, 1 below
+// release - window/2, 0 above release + window/2 (both kept within [0, 1]), a smoothstep between. The gap pull (gap_pull.h)
+// takes the rest, 1 - r.
+double releaseRamp(double openWeight, const CohesiveParams& params);
+
 struct CohesiveTerm {
   int key = 0;
   CohesivePair pair;
   double restLength = 0;           // l_ij, eq. (12)
   Eigen::Vector2d restDirection;   // fallback xhat when the deformed edges collapse
+  std::vector<char> closedIn;      // [key]: 1 where the pair is among that key's cohesive pairs
 };
 
 class CohesiveEnergy {
@@ -39,6 +46,14 @@ class CohesiveEnergy {
   // held[j] for every term j (false for terms of keys with zero weight).
   double evaluate(const Eigen::MatrixX2d& x, const Eigen::VectorXd& w, Eigen::MatrixX2d& gradient,
                   std::vector<char>& held) const;
+
+  // Term j's weight at w: w(key), under CutTiming::kRelease times the release ramp of the open
+  // keys' total weight (1 below release - window/2, 0 above release + window/2, smooth between).
+  double termWeight(int term, const Eigen::VectorXd& w) const;
+  // Term j's release ramp at w (releaseRamp of its open keys' weight; 1 under CutTiming::kTau).
+  double ramp(int term, const Eigen::VectorXd& w) const;
+  // Under CutTiming::kRelease: whether term j glues at w (its ramp is 1: the sides are shut).
+  bool glued(int term, const Eigen::VectorXd& w) const;
 
   // Isotropic spring constant standing in for term j in a matrix shared by x and y:
   // l/3 lambda max(alpha, 1 - alpha), the largest eigenvalue of its P, so the spring majorizes it.

@@ -30,7 +30,7 @@ const Eigen::SparseMatrix<double>& GlobalMatrix::assemble(const GlobalMatrixFram
     const CohesivePair& p = terms[j].pair;
     // k S [[2,1],[1,2]] S^T with S = [e_a - e_c, e_b - e_d]; zeros keep the pattern when clamped.
     const bool on = j < frame.held.size() && frame.held[j];
-    const double k = on ? frame.w(terms[j].key) * cohesive.springConstant(static_cast<int>(j)) : 0.0;
+    const double k = on ? cohesive.termWeight(static_cast<int>(j), frame.w) * cohesive.springConstant(static_cast<int>(j)) : 0.0;
     const int vert[4] = {p.a, p.c, p.b, p.d};
     const double sign[4] = {1, -1, 1, -1};
     for (int r = 0; r < 4; ++r)
@@ -38,6 +38,15 @@ const Eigen::SparseMatrix<double>& GlobalMatrix::assemble(const GlobalMatrixFram
         const double block = (r / 2 == c / 2) ? 2.0 : 1.0;
         assembly_.add(vert[r], vert[c], k * block * sign[r] * sign[c]);
       }
+  }
+  // The gap pull's springs, the same form on the same entries (gap_pull.h), whatever is held.
+  for (int j = 0; sources_.gapPull && j < sources_.gapPull->size(); ++j) {
+    const CohesivePair& p = sources_.gapPull->pair(j);
+    const double k = sources_.gapPull->springConstant(j, frame.w);
+    const int vert[4] = {p.a, p.c, p.b, p.d};
+    const double sign[4] = {1, -1, 1, -1};
+    for (int r = 0; r < 4; ++r)
+      for (int c = 0; c < 4; ++c) assembly_.add(vert[r], vert[c], k * ((r / 2 == c / 2) ? 2.0 : 1.0) * sign[r] * sign[c]);
   }
   for (int v = 0; v < vertices_; ++v)
     assembly_.add(v, v, sources_.tie + (frame.springs.size() ? frame.springs(v) : 0.0));
@@ -53,7 +62,7 @@ long GlobalMatrix::updateCost(const std::vector<char>& held) const {
   const auto& terms = sources_.cohesive->terms();
   long cost = 0;
   for (size_t j = 0; j < held.size(); ++j)
-    if (held[j] != held_[j] && weights_(terms[j].key) != 0) {
+    if (held[j] != held_[j] && sources_.cohesive->termWeight(static_cast<int>(j), weights_) != 0) {
       const CohesivePair& p = terms[j].pair;
       cost += 2 * factor_.updateCost(std::min(std::min(p.a, p.b), std::min(p.c, p.d)));
     }
@@ -69,9 +78,10 @@ bool GlobalMatrix::updateHeld(const std::vector<char>& held) {
   for (int pass = 0; pass < 2; ++pass)
     for (size_t j = 0; j < held.size(); ++j) {
       const bool engages = held[j] && !held_[j];
-      if (held[j] == held_[j] || engages != (pass == 0) || weights_(terms[j].key) == 0) continue;
+      const double weight = cohesive.termWeight(static_cast<int>(j), weights_);
+      if (held[j] == held_[j] || engages != (pass == 0) || weight == 0) continue;
       const CohesivePair& p = terms[j].pair;
-      const double k = weights_(terms[j].key) * cohesive.springConstant(static_cast<int>(j));
+      const double k = weight * cohesive.springConstant(static_cast<int>(j));
       const double sigma = engages ? 1.0 : -1.0;
       const double a1 = std::sqrt(1.5 * k), a2 = std::sqrt(0.5 * k);
       try {
@@ -88,7 +98,7 @@ bool GlobalMatrix::updateHeld(const std::vector<char>& held) {
 }
 
 void GlobalMatrix::setSources(const GlobalMatrixSources& sources) {
-  if (sources.deformation != sources_.deformation || sources.cohesive != sources_.cohesive ||
+  if (sources.deformation != sources_.deformation || sources.cohesive != sources_.cohesive || sources.gapPull != sources_.gapPull ||
       sources.nonOverlap != sources_.nonOverlap)
     throw std::logic_error("global matrix: new sources must keep the energies (and so H's pattern)");
   sources_ = sources;
@@ -116,7 +126,17 @@ bool GlobalMatrix::springsMatch(const Eigen::VectorXd& springs) const {
 
 bool GlobalMatrix::models(const GlobalMatrixFrame& frame, double refactorDistance) const {
   return valid_ && (frame.w - weights_).lpNorm<1>() <= refactorDistance &&
-         (refactorDistance > 0 || frame.w == weights_) && frame.held == held_ && springsMatch(frame.springs);
+         (refactorDistance > 0 || frame.w == weights_) && frame.held == held_ && springsMatch(frame.springs) &&
+         rampsMatch(frame.w);
+}
+
+bool GlobalMatrix::rampsMatch(const Eigen::VectorXd& w) const {
+  // Within a release window a cut's springs change with w much faster than the rest of H (the
+  // closing pull fades and the gap pull grows over a few frames): H follows them within a tenth.
+  const CohesiveEnergy& cohesive = *sources_.cohesive;
+  for (int j = 0; j < static_cast<int>(cohesive.terms().size()); ++j)
+    if (std::abs(cohesive.ramp(j, w) - cohesive.ramp(j, weights_)) > 0.1) return false;
+  return true;
 }
 
 }  // namespace ib

@@ -10,6 +10,7 @@
 #pragma once
 
 #include "interpolation/cohesive_energy.h"
+#include "interpolation/gap_pull.h"
 #include "interpolation/deformation_energy.h"
 #include "interpolation/non_overlap.h"
 #include "linalg/cholesky_preconditioner.h"
@@ -31,6 +32,7 @@ struct GlobalMatrixSources {
   // With nonOverlap given: whether W_O is enforced. false keeps the boundary entries in H's
   // pattern with value 0, so W_O can be switched on and off without a new pattern.
   bool enforceNonOverlap = true;
+  const GapPull* gapPull = nullptr;  // the open keys' pull on the cuts' springs; null: none
 };
 
 // The frame H is wanted for.
@@ -74,6 +76,7 @@ class GlobalMatrix {
   const std::vector<char>& held() const { return held_; }
 
  private:
+  bool rampsMatch(const Eigen::VectorXd& w) const;  // every cut's release ramp within 0.1 of H's
   const Eigen::SparseMatrix<double>& assemble(const GlobalMatrixFrame& frame);
   bool springsMatch(const Eigen::VectorXd& springs) const;
 

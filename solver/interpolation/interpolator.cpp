@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdlib>
 #include <cmath>
 #include <omp.h>
 #include <stdexcept>
@@ -114,6 +115,7 @@ Interpolator::Impl::Impl(ThreadLayout layout, const InterpolationParams& params,
   // with zero weight.
   vertexWeight_ = 1.0 / mesh.vertexCount();
   cohesive_ = std::make_unique<CohesiveEnergy>(mesh, keys_, params.cohesive);
+  gapPull_ = std::make_unique<GapPull>(mesh, keys_, *cohesive_, params.cohesive);
   nonOverlap_ = std::make_unique<NonOverlap>(mesh, 0.0);  // its penalty follows the stiffness scale
   updateStiffnessScale();
   global_ = std::make_unique<GlobalMatrix>(matrixSources(), mesh.vertexCount(), std::move(layout.partStart),
@@ -136,6 +138,7 @@ void Interpolator::Impl::updateStiffnessScale() {
 GlobalMatrixSources Interpolator::Impl::matrixSources() const {
   GlobalMatrixSources sources{deformation_.get(), cohesive_.get(), nonOverlap_.get(),
                               options_.placementStiffness * vertexWeight_, stiffnessScale_};
+  sources.gapPull = gapPull_.get();
   sources.enforceNonOverlap = params_.nonOverlap;
   return sources;
 }
@@ -185,11 +188,12 @@ InterpolationResult Interpolator::Impl::solve(const Eigen::VectorXd& w, const Ei
     s.x = frame.blend;
   }
   // Place the start rigidly with the groups its own links define (springs hold the rigid motions
-  // themselves), then evaluate.
+  // themselves), take the cuts' neighbourhood rotations for the gap pull, then evaluate.
   if (!frame.springs.size()) {
     evaluateLinks(frame, s);
     align(frame, s, s.x);
   }
+  gapPull_->freezeRotations(s.x);
   evaluateState(frame, s);
 
   InterpolationResult result;
@@ -313,7 +317,12 @@ InterpolationResult Interpolator::Impl::solve(const Eigen::VectorXd& w, const Ei
   result.converged = norm <= converges || (stalledAtContact && norm <= 10 * converges);
   result.relativeResidual = relative(norm);
   result.energy = s.energy;
+  // The pairs that glue (under CutTiming::kRelease the ones whose closing pull is whole: a pair
+  // fading out over the release window is still a spring in H, but its sides are parting).
   result.heldPairs = s.held;
+  if (params_.cohesive.timing == CutTiming::kRelease)
+    for (size_t j = 0; j < result.heldPairs.size(); ++j)
+      result.heldPairs[j] = result.heldPairs[j] && cohesive_->glued(static_cast<int>(j), frame.w);
   result.interpolationEnergy = s.energy - s.placement;
   result.x = fromLayout(s.x, originalOf_) * scale_;
   result.milliseconds =

@@ -57,6 +57,7 @@ void Interpolator::Impl::evaluateState(const Frame& frame, State& s) const {
   if (frame.springs.size()) s.energy += springEnergyOf(frame.springs, frame.springTarget, s.x, s.gradient);
   s.energy += deformation_->evaluate(s.x, frame.keys, s.gradient, vertexSplit_, triangleSplit_, params_.metric);
   s.energy += cohesive_->evaluate(s.x, frame.w, s.gradient, s.held);
+  s.energy += gapPull_->evaluate(s.x, frame.w, s.gradient);
   s.contacts.clear();
   if (params_.nonOverlap) s.energy += nonOverlap_->evaluate(s.x, frame.participants, s.gradient, s.contacts);
 }
@@ -75,6 +76,12 @@ void Interpolator::Impl::align(const Frame& frame, const State& reference, Eigen
     if (j < reference.held.size() && reference.held[j]) {
       links.push_back({terms[j].pair.a, terms[j].pair.c});
       links.push_back({terms[j].pair.b, terms[j].pair.d});
+    }
+  // The gap pull places the pieces it joins relative to each other, as a held pair does.
+  for (int p = 0; p < gapPull_->size(); ++p)
+    if (gapPull_->springConstant(p, frame.w) > 0) {
+      links.push_back({gapPull_->pair(p).a, gapPull_->pair(p).c});
+      links.push_back({gapPull_->pair(p).b, gapPull_->pair(p).d});
     }
   if (links != groupLinks_) {
     groups_.update(links);

@@ -6,6 +6,7 @@
 #include "core/thread_block.h"
 #include "core/thread_budget.h"
 #include "interpolation/cohesive_energy.h"
+#include "interpolation/gap_pull.h"
 #include "interpolation/deformation_energy.h"
 #include "interpolation/global_matrix.h"
 #include "interpolation/interpolator.h"
@@ -96,6 +97,7 @@ class Interpolator::Impl {
   double vertexWeight_ = 0;                // placement weight m_v = 1/n of every vertex (placement.h)
   std::unique_ptr<DeformationEnergy> deformation_;
   std::unique_ptr<CohesiveEnergy> cohesive_;
+  std::unique_ptr<GapPull> gapPull_;  // the open keys' pull on the cuts (CutTiming::kRelease)
   std::unique_ptr<NonOverlap> nonOverlap_;  // always built; used when params_.nonOverlap
   PlacementGroups groups_;
   std::vector<std::pair<int, int>> groupLinks_;  // the links groups_ was last built from

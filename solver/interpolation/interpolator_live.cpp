@@ -19,6 +19,8 @@ void validateInterpolationParams(const InterpolationParams& p) {
   require(std::isfinite(c.lambda) && c.lambda >= 0, "lambda", "must be a finite number >= 0");
   require(c.tau > 0 && !std::isnan(c.tau), "tau", "must be > 0 (infinity: pairs never separate)");
   require(c.alpha >= 0 && c.alpha <= 1, "alpha", "must be in [0, 1]");
+  require(c.release >= 0 && c.release <= 1, "release", "must be in [0, 1]");
+  require(c.releaseWindow > 0 && c.releaseWindow <= 1, "release_window", "must be in (0, 1]");
 }
 
 void validateStiffness(const Eigen::VectorXd& kappa, int triangleCount) {
@@ -44,6 +46,7 @@ void Interpolator::Impl::setParameters(const InterpolationParams& params) {
   validateInterpolationParams(params);
   params_ = params;
   cohesive_->setParams(params.cohesive);
+  gapPull_->setParams(params.cohesive);
   // H's spring constants follow lambda and alpha, its boundary entries non-overlap; the pattern
   // stays (setSources checks), the factor is redone at the next solve.
   global_->setSources(matrixSources());
