@@ -54,7 +54,10 @@ double CohesiveEnergy::termWeight(int term, const Eigen::VectorXd& w) const {
   const CohesiveTerm& t = terms_[term];
   const double weight = w(t.key);
   if (params_.timing == CutTiming::kTau || weight <= 0) return weight;
-  return weight * releaseRamp(openWeight(t, w), params_);
+  // The closing keys share r between them (their weights sum to 1 - o), the open keys 1 - r
+  // (gap_pull.h): the gap is then (1 - r) of the drawn one, whatever the weights' split.
+  const double open = openWeight(t, w);
+  return open < 1 ? releaseRamp(open, params_) * weight / (1 - open) : 0.0;
 }
 
 double CohesiveEnergy::ramp(int term, const Eigen::VectorXd& w) const {

@@ -62,7 +62,7 @@ double GapPull::share(const Pull& pull, const Eigen::VectorXd& w) const {
   if (params_.timing == CutTiming::kTau) return 0;
   double open = 0;
   for (int k : pull.key) open += w(k);
-  return 1 - releaseRamp(open, params_);
+  return open > 0 ? (1 - releaseRamp(open, params_)) / open : 0.0;  // per unit of an open key's weight
 }
 
 double GapPull::springConstant(int p, const Eigen::VectorXd& w) const {
@@ -71,7 +71,7 @@ double GapPull::springConstant(int p, const Eigen::VectorXd& w) const {
   if (s <= 0) return 0;
   double weight = 0;
   for (int k : pull.key) weight += w(k);
-  return s * weight * pull.restLength / 3.0 * params_.lambda;
+  return s * weight * pull.restLength / 3.0 * params_.lambda;  // (1 - r) l/3 lambda
 }
 
 void GapPull::freezeRotations(const Eigen::MatrixX2d& x) {

@@ -193,7 +193,7 @@ InterpolationResult Interpolator::Impl::solve(const Eigen::VectorXd& w, const Ei
     evaluateLinks(frame, s);
     align(frame, s, s.x);
   }
-  gapPull_->freezeRotations(s.x);
+  gapPull_->freezeRotations(frame.blend);
   evaluateState(frame, s);
 
   InterpolationResult result;
