@@ -17,15 +17,15 @@ enum class CutTiming {
 
 // Cohesive parameters in normalized units (lengths divided by the shape size).
 struct CohesiveParams {
-  CutTiming timing = CutTiming::kRelease;
-  double release = 0.5;        // the open keys' total weight at which the closed pull is half, in [0, 1]
-  double releaseWindow = 0.3;  // the span of that weight over which it fades, in (0, 1], kept
-                               // within [0, 1] (so a closed key is glued and an open key open)
   double lambda = 4000.0;  // cohesive stiffness lambda (eq. 10); paper default 4e3
   double tau = 1e-3;       // clamp threshold tau (eq. 11): normalized energy per cohesive pair (lengths in
                            // shape sizes); infinity never separates. CutTiming::kTau only
   double alpha = 0.5;      // shear/stretch control alpha in [0, 1] (eq. 13): the jump along the
                            // edge costs (1 - alpha), across it alpha; larger alpha = easier shear
+  CutTiming timing = CutTiming::kRelease;
+  double release = 0.5;        // the open keys' total weight at which the closed pull is half, in [0, 1]
+  double releaseWindow = 0.3;  // the span of that weight over which it fades, in (0, 1], kept
+                               // within [0, 1] (so a closed key is glued and an open key open)
 };
 
 struct InterpolationParams {
