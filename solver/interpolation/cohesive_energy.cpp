@@ -50,6 +50,15 @@ double releaseRamp(double openWeight, const CohesiveParams& params) {
   return 1 - u * u * (3 - 2 * u);
 }
 
+double pullFade(double openWeight, const CohesiveParams& params) {
+  const double hi = std::min(1.0, params.release + 0.5 * params.releaseWindow);
+  if (openWeight <= hi) return 1;
+  const double end = std::min(1.0, hi + params.releaseWindow);
+  if (openWeight >= end) return 0;
+  const double u = (openWeight - hi) / (end - hi);
+  return 1 - u * u * (3 - 2 * u);
+}
+
 double CohesiveEnergy::termWeight(int term, const Eigen::VectorXd& w) const {
   const CohesiveTerm& t = terms_[term];
   const double weight = w(t.key);

@@ -24,6 +24,11 @@ namespace ib {
 // release - window/2, 0 above release + window/2 (both kept within [0, 1]), a smoothstep between. The gap pull (gap_pull.h)
 // takes the rest, 1 - r.
 double releaseRamp(double openWeight, const CohesiveParams& params);
+// The gap pull's fade after the window: 1 up to release + window/2, 0 from a window further on
+// (both kept within [0, 1]), a smoothstep between. Once the closing pull is gone the pieces are
+// free again (placed on the blend, shaped by E_D), where the pull's target, the open keys' gap
+// scaled by o, already put them.
+double pullFade(double openWeight, const CohesiveParams& params);
 
 struct CohesiveTerm {
   int key = 0;

@@ -17,6 +17,21 @@ Eigen::Matrix2d edges(const Eigen::MatrixX2d& x, const Triangle& t) {
 }
 
 
+// gamma of a pull's key: how firmly its rotation keeps to the frozen one, kappa o^2 (|U|^2 + |V|^2),
+// the size of the pull's own term once the gap is open.
+double anchorOf(double open, const Eigen::Vector2d& U, const Eigen::Vector2d& V) {
+  constexpr double kAnchor = 0.1;  // kappa
+  return kAnchor * open * open * (U.squaredNorm() + V.squaredNorm());
+}
+
+// The rotation minimizing Q(u - o R U, v - o R V) + gamma |R - Rb|_F^2: closest to
+// o ((u + v/2) U^T + (v + u/2) V^T) + gamma Rb.
+Eigen::Matrix2d pullRotation(const Eigen::Vector2d& u, const Eigen::Vector2d& v, double open, const Eigen::Vector2d& U,
+                             const Eigen::Vector2d& V, const Eigen::Matrix2d& Rb, double gamma) {
+  const Eigen::Matrix2d S = open * ((u + 0.5 * v) * U.transpose() + (v + 0.5 * u) * V.transpose()) + gamma * Rb;
+  return closestRotation(S);
+}
+
 }  // namespace
 
 GapPull::GapPull(const Multimesh& mesh, const std::vector<Eigen::MatrixX2d>& keys, const CohesiveEnergy& cohesive,
@@ -62,7 +77,8 @@ double GapPull::share(const Pull& pull, const Eigen::VectorXd& w) const {
   if (params_.timing == CutTiming::kTau) return 0;
   double open = 0;
   for (int k : pull.key) open += w(k);
-  return open > 0 ? (1 - releaseRamp(open, params_)) / open : 0.0;  // per unit of an open key's weight
+  if (open <= 0 || open >= 1) return 0;  // no closing pull to part from, or nothing left of it
+  return (1 - releaseRamp(open, params_)) * pullFade(open, params_) / open;  // per unit of an open key's weight
 }
 
 double GapPull::springConstant(int p, const Eigen::VectorXd& w) const {
@@ -72,6 +88,13 @@ double GapPull::springConstant(int p, const Eigen::VectorXd& w) const {
   double weight = 0;
   for (int k : pull.key) weight += w(k);
   return s * weight * pull.restLength / 3.0 * params_.lambda;  // (1 - r) l/3 lambda
+}
+
+double GapPull::strength(int p, const Eigen::VectorXd& w) const {
+  const Pull& pull = pulls_[p];
+  double weight = 0;
+  for (int k : pull.key) weight += w(k);
+  return std::max(0.0, share(pull, w)) * weight;
 }
 
 void GapPull::freezeRotations(const Eigen::MatrixX2d& x) {
@@ -90,11 +113,15 @@ double GapPull::evaluate(const Eigen::MatrixX2d& x, const Eigen::VectorXd& w, Ei
     const Eigen::Vector2d u = (x.row(p.a) - x.row(p.c)).transpose();
     const Eigen::Vector2d v = (x.row(p.b) - x.row(p.d)).transpose();
     const double scale = pull.restLength / 3.0 * params_.lambda;
+    double open = 0;
+    for (int k : pull.key) open += w(k);
     for (size_t i = 0; i < pull.key.size(); ++i) {
       const double weight = pullShare * w(pull.key[i]);
       if (weight <= 0) continue;
-      const Eigen::Vector2d du = u - pull.R[i] * pull.U[i], dv = v - pull.R[i] * pull.V[i];
-      energy += weight * scale * (du.squaredNorm() + du.dot(dv) + dv.squaredNorm());
+      const double gamma = anchorOf(open, pull.U[i], pull.V[i]);
+      const Eigen::Matrix2d R = pullRotation(u, v, open, pull.U[i], pull.V[i], pull.R[i], gamma);
+      const Eigen::Vector2d du = u - open * R * pull.U[i], dv = v - open * R * pull.V[i];
+      energy += weight * scale * (du.squaredNorm() + du.dot(dv) + dv.squaredNorm() + gamma * (R - pull.R[i]).squaredNorm());
       const Eigen::Vector2d gu = weight * scale * (2.0 * du + dv), gv = weight * scale * (du + 2.0 * dv);
       gradient.row(p.a) += gu.transpose();
       gradient.row(p.c) -= gu.transpose();
@@ -106,3 +133,4 @@ double GapPull::evaluate(const Eigen::MatrixX2d& x, const Eigen::VectorXd& w, Ei
 }
 
 }  // namespace ib
+

@@ -1,18 +1,19 @@
-// W_G, the pull of a cut's two sides towards the gap the keys where it is open draw between them
-// (../shared/topology-change.md, lever 1; docs/solver.md, "Cut timing"). For every cohesive pair
-// (a, b | c, d) and every key j where the pair is open (not among that key's cohesive pairs):
-//   w_j (1 - r) l/3 lambda Q(u - R_j U_j, v - R_j V_j),   Q(p, q) = |p|^2 + p.q + |q|^2,
-//   u = x^a - x^c, v = x^b - x^d,  U_j, V_j the same differences in key j,
-// r = releaseRamp of the open keys' total weight (cohesive_energy.h; no pull under CutTiming::kTau),
-// R_j the rotation of the cut's neighbourhood from key j: the closest rotation to
-// F = D_s(x) D_s(X_j)^{-1} + D_t(x) D_t(X_j)^{-1} for a triangle s at a and a triangle t at c, taken
-// at the start of each frame's solve (freezeRotations) and held through it, so that within a frame
-// the pull is a quadratic whose Hessian H holds exactly: Q is the form of the cohesive spring at
-// alpha = 1/2, and the pull joins the pair's spring in the global matrix. (With R following x
-// within the solve, its exact gradient left the local-global iteration stalled at a relative
-// residual of 5e-3 after 500 iterations on glued squares; frozen per frame, 10-30.) The closed
-// keys pull u, v to zero (W_C), the open keys to their drawn gap: the gap of an inbetween blends the
-// two, where before nothing wanted the sides apart and they parted in one frame.
+// W_G, the pull of a cut's two sides towards the gap the keys where it is open draw between them,
+// while the cut lets go (../shared/topology-change.md, lever 1; docs/solver.md, "Cut timing"). For
+// every cohesive pair (a, b | c, d) and every key j where the pair is open:
+//   w_j (1 - r) f / o  l/3 lambda  [Q(u - o R_j U_j, v - o R_j V_j) + gamma_j |R_j - B_j|_F^2],
+//   Q(p, q) = |p|^2 + p.q + |q|^2,  u = x^a - x^c, v = x^b - x^d,  U_j, V_j the same in key j,
+// o the open keys' total weight, r = releaseRamp(o) and f = pullFade(o) (cohesive_energy.h; no
+// pull under CutTiming::kTau, at o = 0 or at o = 1). The closing keys pull the gap to zero with
+// weight r, the open keys to o times their drawn gap with 1 - r: the gap grows over the window
+// to where the blend of the keys puts the pieces, and the pull fades out after it, so the pieces
+// are free again (as the paper has them) without a jump.
+// R_j is the rotation that minimizes the bracket (a local step, as ARAP's rotations), so the
+// gradient is the bracket's at fixed R_j and Q turns with the pieces. B_j, the rotation of the cut's
+// neighbourhood in the frame's blend of the keys relative to key j (taken once per frame,
+// freezeRotations), anchors it while the sides are shut and u, v say nothing of a direction:
+// gamma_j = 0.1 o^2 (|U_j|^2 + |V_j|^2). Q is the cohesive spring's form at alpha = 1/2, so the
+// pull joins the pair's spring in the global matrix.
 #pragma once
 
 #include "interpolation/cohesive_energy.h"
@@ -33,7 +34,7 @@ class GapPull {
   void setParams(const CohesiveParams& params) { params_ = params; }
   bool empty() const { return pulls_.empty(); }
 
-  // Takes R_j for every pull and open key from x (n x 2): at the start of a frame's solve.
+  // Takes B_j for every pull and open key from x (n x 2, the frame's blend): at the start of a frame's solve.
   void freezeRotations(const Eigen::MatrixX2d& x);
 
   // Returns W_G at x with weights w and the frozen rotations, and adds its gradient (n x 2).
@@ -42,6 +43,8 @@ class GapPull {
   // The isotropic spring constant of pull p's pair at weights w (sum over its open keys of
   // w_j (1 - r) l/3 lambda), for the global matrix; pair(p) its vertices.
   double springConstant(int p, const Eigen::VectorXd& w) const;
+  // springConstant over the pair's full l/3 lambda: in [0, 1].
+  double strength(int p, const Eigen::VectorXd& w) const;
   const CohesivePair& pair(int p) const { return pulls_[p].pair; }
   int size() const { return static_cast<int>(pulls_.size()); }
 
@@ -58,7 +61,7 @@ class GapPull {
     std::vector<int> key;
     std::vector<Eigen::Vector2d> U, V;
     std::vector<Eigen::Matrix2d> Ma, Mc;
-    std::vector<Eigen::Matrix2d> R;  // frozen rotations (identity until freezeRotations)
+    std::vector<Eigen::Matrix2d> R;  // B_j, the frozen anchor rotations (identity until freezeRotations)
   };
   CohesiveParams params_;
   std::vector<Pull> pulls_;

@@ -136,6 +136,8 @@ bool GlobalMatrix::rampsMatch(const Eigen::VectorXd& w) const {
   const CohesiveEnergy& cohesive = *sources_.cohesive;
   for (int j = 0; j < static_cast<int>(cohesive.terms().size()); ++j)
     if (std::abs(cohesive.ramp(j, w) - cohesive.ramp(j, weights_)) > 0.1) return false;
+  for (int p = 0; sources_.gapPull && p < sources_.gapPull->size(); ++p)
+    if (std::abs(sources_.gapPull->strength(p, w) - sources_.gapPull->strength(p, weights_)) > 0.1) return false;
   return true;
 }
 

@@ -24,8 +24,10 @@ struct CohesiveParams {
                            // edge costs (1 - alpha), across it alpha; larger alpha = easier shear
   CutTiming timing = CutTiming::kRelease;
   double release = 0.5;        // the open keys' total weight at which the closed pull is half, in [0, 1]
-  double releaseWindow = 0.3;  // the span of that weight over which it fades, in (0, 1], kept
-                               // within [0, 1] (so a closed key is glued and an open key open)
+  double releaseWindow = 1.0;  // the span of that weight over which it fades, in (0, 1], kept
+                               // within [0, 1] (so a closed key is glued and an open key open);
+                               // default 1: the sides part over the whole segment, fastest at
+                               // `release` (bench pops: every test scene within 2.2x its median)
 };
 
 struct InterpolationParams {

@@ -58,8 +58,48 @@ void Interpolator::Impl::evaluateState(const Frame& frame, State& s) const {
   s.energy += deformation_->evaluate(s.x, frame.keys, s.gradient, vertexSplit_, triangleSplit_, params_.metric);
   s.energy += cohesive_->evaluate(s.x, frame.w, s.gradient, s.held);
   s.energy += gapPull_->evaluate(s.x, frame.w, s.gradient);
+  projectTurns(frame, s);
   s.contacts.clear();
   if (params_.nonOverlap) s.energy += nonOverlap_->evaluate(s.x, frame.participants, s.gradient, s.contacts);
+}
+
+void Interpolator::Impl::projectTurns(const Frame& frame, State& s) const {
+  // W_G's anchor to the frozen rotations B_j is not invariant under a turn of the group it joins,
+  // but the placement turns every group by E_P alone (align): the gradient's turn component there
+  // is not the iteration's to reduce, and the stopping rule would wait for it in vain
+  // (continental-drift: 500 iterations at E constant to 8 digits). It is taken out, per group
+  // with an active pull.
+  std::vector<char> pulled(static_cast<size_t>(groups_.groupCount()), 0);
+  bool any = false;
+  for (int p = 0; p < gapPull_->size(); ++p)
+    if (gapPull_->springConstant(p, frame.w) > 0) {
+      pulled[groups_.groupOf(gapPull_->pair(p).a)] = 1;
+      any = true;
+    }
+  if (!any) return;
+  const auto& start = groups_.memberStart();
+  const auto& members = groups_.members();
+  for (int k = 0; k < groups_.groupCount(); ++k) {
+    if (!pulled[k]) continue;
+    Eigen::Vector2d c(0, 0);
+    for (int i = start[k]; i < start[k + 1]; ++i) c += s.x.row(members[i]).transpose();
+    c /= std::max(1, start[k + 1] - start[k]);
+    double torque = 0, inertia = 0;
+    for (int i = start[k]; i < start[k + 1]; ++i) {
+      const int v = members[i];
+      const double px = s.x(v, 0) - c.x(), py = s.x(v, 1) - c.y();
+      torque += px * s.gradient(v, 1) - py * s.gradient(v, 0);
+      inertia += px * px + py * py;
+    }
+    if (inertia <= 0) continue;
+    const double turn = torque / inertia;
+    for (int i = start[k]; i < start[k + 1]; ++i) {
+      const int v = members[i];
+      const double px = s.x(v, 0) - c.x(), py = s.x(v, 1) - c.y();
+      s.gradient(v, 0) += turn * py;
+      s.gradient(v, 1) -= turn * px;
+    }
+  }
 }
 
 void Interpolator::Impl::evaluateLinks(const Frame& frame, State& s) const {

@@ -61,6 +61,7 @@ class Interpolator::Impl {
   // Only what placement groups need: held pairs and non-overlap contacts.
   void evaluateLinks(const Frame& frame, State& state) const;
   void align(const Frame& frame, const State& reference, Eigen::MatrixX2d& x);
+  void projectTurns(const Frame& frame, State& s) const;
   // One safeguarded iteration from s: the Anderson candidate, else the plain step, else (if the
   // set of held pairs changed) a refactorization to retry with, else a backtracked plain
   // step. On kAccepted the new iterate is in candidate; plain is scratch.

@@ -23,6 +23,7 @@ class PlacementGroups {
   // Regroups with the extra links joined in (groups are numbered 0..groupCount()-1).
   void update(const std::vector<std::pair<int, int>>& links);
   int groupCount() const { return groupCount_; }
+  int groupOf(int v) const { return label_[v]; }
   // Vertices of group k: members()[memberStart()[k] .. memberStart()[k + 1]).
   const std::vector<int>& memberStart() const { return memberStart_; }
   const std::vector<int>& members() const { return members_; }
