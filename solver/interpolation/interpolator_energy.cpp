@@ -26,7 +26,7 @@ double springEnergyOf(const Eigen::VectorXd& c, const Eigen::MatrixX2d& target, 
 
 }  // namespace
 
-void Interpolator::Impl::evaluateState(const Frame& frame, State& s) const {
+void Interpolator::Impl::evaluateState(const Frame& frame, State& s, bool placed) const {
   const int n = vertexCount();
   s.gradient.resize(n, 2);
   // E_P first: it also initializes the gradient. Each thread sums its own vertices; the sums
@@ -58,7 +58,7 @@ void Interpolator::Impl::evaluateState(const Frame& frame, State& s) const {
   s.energy += deformation_->evaluate(s.x, frame.keys, s.gradient, vertexSplit_, triangleSplit_, params_.metric);
   s.energy += cohesive_->evaluate(s.x, frame.w, s.gradient, s.held);
   s.energy += gapPull_->evaluate(s.x, frame.w, s.gradient);
-  projectTurns(frame, s);
+  if (placed) projectTurns(frame, s);
   s.contacts.clear();
   if (params_.nonOverlap) s.energy += nonOverlap_->evaluate(s.x, frame.participants, s.gradient, s.contacts);
 }
@@ -135,7 +135,7 @@ EnergyEvaluation Interpolator::Impl::evaluate(const Eigen::MatrixX2d& x, const E
   const Frame frame = makeFrame(w, nullptr);
   State s;
   s.x = toLayout(x, originalOf_) / scale_;
-  evaluateState(frame, s);
+  evaluateState(frame, s, false);  // the true gradient: x was not placed by align
   return {s.energy, fromLayout(s.gradient, originalOf_) / scale_};
 }
 

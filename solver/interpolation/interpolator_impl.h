@@ -57,7 +57,8 @@ class Interpolator::Impl {
   GlobalMatrixSources matrixSources() const;  // what H is built from, with the current parameters
   bool cancelled() const { return cancel_ && cancel_->load(std::memory_order_relaxed); }
   Frame makeFrame(const Eigen::VectorXd& w, const VertexSprings* springs) const;
-  void evaluateState(const Frame& frame, State& state) const;
+  // placed: x comes from the solve (align), so the turn component of pulled groups is taken out (projectTurns).
+  void evaluateState(const Frame& frame, State& state, bool placed = true) const;
   // Only what placement groups need: held pairs and non-overlap contacts.
   void evaluateLinks(const Frame& frame, State& state) const;
   void align(const Frame& frame, const State& reference, Eigen::MatrixX2d& x);
