@@ -96,8 +96,13 @@ double CohesiveEnergy::evaluate(const Eigen::MatrixX2d& x, const Eigen::VectorXd
     const Eigen::Vector2d s = (x.row(p.a) + x.row(p.c) - x.row(p.b) - x.row(p.d)).transpose();
     const double sn = s.norm();
     const Eigen::Vector2d xhat = sn > 1e-12 * t.restLength ? Eigen::Vector2d(s / sn) : t.restDirection;
-    const Eigen::Matrix2d P =
-        params_.alpha * Eigen::Matrix2d::Identity() + (1.0 - 2.0 * params_.alpha) * xhat * xhat.transpose();
+    // Under CutTiming::kRelease alpha eases to 1/2 as the ramp r falls: at alpha != 1/2 the term
+    // depends on the seam's direction xhat, with curvature growing as (gap / edge)^2, and a seam
+    // that is letting go has a large gap (no tau clamps it): cell-splitting's cells stalled the
+    // solve (no step of 1e-3 of the local-global one lowered E). Glued (r = 1) it is alpha.
+    const double r = params_.timing == CutTiming::kRelease ? ramp(static_cast<int>(j), w) : 1.0;
+    const double alpha = 0.5 + (params_.alpha - 0.5) * r * r;
+    const Eigen::Matrix2d P = alpha * Eigen::Matrix2d::Identity() + (1.0 - 2.0 * alpha) * xhat * xhat.transpose();
     const Eigen::Vector2d Pu = P * u, Pv = P * v;
     const double scale = t.restLength / 3.0 * params_.lambda;
     const double q = scale * (u.dot(Pu) + u.dot(Pv) + v.dot(Pv));
@@ -110,11 +115,11 @@ double CohesiveEnergy::evaluate(const Eigen::MatrixX2d& x, const Eigen::VectorXd
       gradient.row(p.c) -= gu.transpose();
       gradient.row(p.b) += gv.transpose();
       gradient.row(p.d) -= gv.transpose();
-      if (sn > 1e-12 * t.restLength && params_.alpha != 0.5) {
+      if (sn > 1e-12 * t.restLength && alpha != 0.5) {
         // Through xhat = s / |s|: dq/dxhat = (1 - 2 alpha) scale [2(xhat.u) u + (xhat.v) u +
         // (xhat.u) v + 2(xhat.v) v], and dxhat/ds = (Id - xhat xhat^T) / |s|.
         const double xu = xhat.dot(u), xv = xhat.dot(v);
-        const Eigen::Vector2d h = (1.0 - 2.0 * params_.alpha) * scale * ((2 * xu + xv) * u + (xu + 2 * xv) * v);
+        const Eigen::Vector2d h = (1.0 - 2.0 * alpha) * scale * ((2 * xu + xv) * u + (xu + 2 * xv) * v);
         const Eigen::Vector2d gs = weight * (h - xhat * xhat.dot(h)) / sn;
         gradient.row(p.a) += gs.transpose();
         gradient.row(p.c) += gs.transpose();

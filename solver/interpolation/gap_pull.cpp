@@ -24,14 +24,6 @@ double anchorOf(double open, const Eigen::Vector2d& U, const Eigen::Vector2d& V)
   return kAnchor * open * open * (U.squaredNorm() + V.squaredNorm());
 }
 
-// The rotation minimizing Q(u - o R U, v - o R V) + gamma |R - Rb|_F^2: closest to
-// o ((u + v/2) U^T + (v + u/2) V^T) + gamma Rb.
-Eigen::Matrix2d pullRotation(const Eigen::Vector2d& u, const Eigen::Vector2d& v, double open, const Eigen::Vector2d& U,
-                             const Eigen::Vector2d& V, const Eigen::Matrix2d& Rb, double gamma) {
-  const Eigen::Matrix2d S = open * ((u + 0.5 * v) * U.transpose() + (v + 0.5 * u) * V.transpose()) + gamma * Rb;
-  return closestRotation(S);
-}
-
 }  // namespace
 
 GapPull::GapPull(const Multimesh& mesh, const std::vector<Eigen::MatrixX2d>& keys, const CohesiveEnergy& cohesive,
@@ -71,6 +63,28 @@ GapPull::GapPull(const Multimesh& mesh, const std::vector<Eigen::MatrixX2d>& key
     }
     if (!pull.key.empty()) pulls_.push_back(std::move(pull));
   }
+  // Chains: pulls that share a vertex and are open in the same keys (one cut's pairs, end to
+  // end), by union-find; each chain turns as one.
+  std::vector<int> parent(pulls_.size());
+  for (size_t p = 0; p < parent.size(); ++p) parent[p] = static_cast<int>(p);
+  const auto root = [&](int p) {
+    while (parent[p] != p) p = parent[p] = parent[parent[p]];
+    return p;
+  };
+  std::map<int, int> firstAt;  // vertex -> a pull using it
+  for (size_t p = 0; p < pulls_.size(); ++p) {
+    const CohesivePair& q = pulls_[p].pair;
+    for (int v : {q.a, q.b, q.c, q.d}) {
+      const auto [it, fresh] = firstAt.emplace(v, static_cast<int>(p));
+      if (!fresh && pulls_[it->second].key == pulls_[p].key) parent[root(static_cast<int>(p))] = root(it->second);
+    }
+  }
+  std::map<int, int> chainOfRoot;
+  for (size_t p = 0; p < pulls_.size(); ++p) {
+    const auto [it, fresh] = chainOfRoot.emplace(root(static_cast<int>(p)), static_cast<int>(chainOfRoot.size()));
+    pulls_[p].chain = it->second;
+  }
+  chains_ = static_cast<int>(chainOfRoot.size());
 }
 
 double GapPull::share(const Pull& pull, const Eigen::VectorXd& w) const {
@@ -104,7 +118,35 @@ void GapPull::freezeRotations(const Eigen::MatrixX2d& x) {
   }
 }
 
+std::vector<Eigen::Matrix2d> GapPull::rotations(const Eigen::MatrixX2d& x, const Eigen::VectorXd& w) const {
+  // Per chain and open key (in the order of its pulls' key lists): the rotation minimizing the
+  // chain's pulls, the closest to sum_p k_p [o ((u + v/2) U^T + (v + u/2) V^T) + gamma_p B_p].
+  size_t width = 0;
+  for (const Pull& pull : pulls_) width = std::max(width, pull.key.size());
+  std::vector<Eigen::Matrix2d> S(static_cast<size_t>(chains_) * width, Eigen::Matrix2d::Zero());
+  for (const Pull& pull : pulls_) {
+    const double pullShare = share(pull, w);
+    if (pullShare <= 0) continue;
+    const CohesivePair& p = pull.pair;
+    const Eigen::Vector2d u = (x.row(p.a) - x.row(p.c)).transpose();
+    const Eigen::Vector2d v = (x.row(p.b) - x.row(p.d)).transpose();
+    double open = 0;
+    for (int k : pull.key) open += w(k);
+    for (size_t i = 0; i < pull.key.size(); ++i) {
+      const double k = pullShare * w(pull.key[i]) * pull.restLength;
+      if (k <= 0) continue;
+      S[pull.chain * width + i] += k * (open * ((u + 0.5 * v) * pull.U[i].transpose() + (v + 0.5 * u) * pull.V[i].transpose()) +
+                                        anchorOf(open, pull.U[i], pull.V[i]) * pull.R[i]);
+    }
+  }
+  for (Eigen::Matrix2d& m : S) m = m.isZero(0) ? Eigen::Matrix2d::Identity() : closestRotation(m);
+  return S;
+}
+
 double GapPull::evaluate(const Eigen::MatrixX2d& x, const Eigen::VectorXd& w, Eigen::MatrixX2d& gradient) const {
+  const std::vector<Eigen::Matrix2d> turn = rotations(x, w);
+  size_t width = 0;
+  for (const Pull& pull : pulls_) width = std::max(width, pull.key.size());
   double energy = 0;
   for (const Pull& pull : pulls_) {
     const double pullShare = share(pull, w);
@@ -119,9 +161,10 @@ double GapPull::evaluate(const Eigen::MatrixX2d& x, const Eigen::VectorXd& w, Ei
       const double weight = pullShare * w(pull.key[i]);
       if (weight <= 0) continue;
       const double gamma = anchorOf(open, pull.U[i], pull.V[i]);
-      const Eigen::Matrix2d R = pullRotation(u, v, open, pull.U[i], pull.V[i], pull.R[i], gamma);
+      const Eigen::Matrix2d& R = turn[pull.chain * width + i];
       const Eigen::Vector2d du = u - open * R * pull.U[i], dv = v - open * R * pull.V[i];
       energy += weight * scale * (du.squaredNorm() + du.dot(dv) + dv.squaredNorm() + gamma * (R - pull.R[i]).squaredNorm());
+      // R minimizes the chain's energy, so the gradient is the one at fixed R.
       const Eigen::Vector2d gu = weight * scale * (2.0 * du + dv), gv = weight * scale * (du + 2.0 * dv);
       gradient.row(p.a) += gu.transpose();
       gradient.row(p.c) -= gu.transpose();

@@ -8,8 +8,10 @@
 // weight r, the open keys to o times their drawn gap with 1 - r: the gap grows over the window
 // to where the blend of the keys puts the pieces, and the pull fades out after it, so the pieces
 // are free again (as the paper has them) without a jump.
-// R_j is the rotation that minimizes the bracket (a local step, as ARAP's rotations), so the
-// gradient is the bracket's at fixed R_j and Q turns with the pieces. B_j, the rotation of the cut's
+// R_j, one per cut (its pairs end to end) and open key, is the rotation that minimizes the cut's
+// brackets (a local step, as ARAP's rotations: the gradient is the brackets' at fixed R_j), so Q
+// turns with the pieces and the cut's gap turns as one (one rotation per pair tore the edges of
+// cell-splitting's cells apart). B_j, the rotation of the cut's
 // neighbourhood in the frame's blend of the keys relative to key j (taken once per frame,
 // freezeRotations), anchors it while the sides are shut and u, v say nothing of a direction:
 // gamma_j = 0.1 o^2 (|U_j|^2 + |V_j|^2). Q is the cohesive spring's form at alpha = 1/2, so the
@@ -62,9 +64,14 @@ class GapPull {
     std::vector<Eigen::Vector2d> U, V;
     std::vector<Eigen::Matrix2d> Ma, Mc;
     std::vector<Eigen::Matrix2d> R;  // B_j, the frozen anchor rotations (identity until freezeRotations)
+    int chain = 0;                   // the cut (pairs end to end, open in the same keys) it turns with
   };
   CohesiveParams params_;
+  // Per chain and open key, the chain's minimizing rotation at x (chain * width + key slot).
+  std::vector<Eigen::Matrix2d> rotations(const Eigen::MatrixX2d& x, const Eigen::VectorXd& w) const;
+
   std::vector<Pull> pulls_;
+  int chains_ = 0;
 };
 
 }  // namespace ib
