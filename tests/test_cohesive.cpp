@@ -52,8 +52,9 @@ double pairEnergy(double alpha, const Eigen::Vector2d& jump) {
 
 }  // namespace
 
-TEST_CASE("cohesive: glued squares stay glued near the glued key and separate past tau") {
+TEST_CASE("cohesive: under tau timing glued squares stay glued near the glued key and separate past tau") {
   InterpolationParams params;
+  params.cohesive.timing = CutTiming::kTau;
   params.cohesive.tau = 1e-3;
   const std::vector<double> gaps = gapsAlongSweep(params, {0.1, 0.3, 0.9});
   INFO("gaps / size at s = 0.1, 0.3, 0.9: " << gaps[0] << ", " << gaps[1] << ", " << gaps[2]);
@@ -62,11 +63,13 @@ TEST_CASE("cohesive: glued squares stay glued near the glued key and separate pa
   REQUIRE(gaps[2] > 0.1);
 }
 
-TEST_CASE("cohesive: a solve reports as holding exactly the pairs that are still glued") {
+TEST_CASE("cohesive: under tau timing a solve reports as holding exactly the pairs that are still glued") {
   // Along the sweep a pair either holds with a gap under 0.3% of the size or has let go and
   // opened by more than 8% (measured), so 1% tells the two apart.
   const auto f = test::gluedSquares(kSide, 1.0, 0.3);
-  Interpolator solver(f.mesh, {}, SolverOptions{});
+  InterpolationParams params;
+  params.cohesive.timing = CutTiming::kTau;
+  Interpolator solver(f.mesh, params, SolverOptions{});
   const std::vector<CohesivePair>& seam = f.mesh.cohesivePairs(0);
   REQUIRE(f.mesh.cohesivePairs(1).empty());
   InterpolationResult r = solver.solve(Eigen::Vector2d(1, 0));
@@ -87,8 +90,9 @@ TEST_CASE("cohesive: a solve reports as holding exactly the pairs that are still
   REQUIRE(lastHolding < static_cast<long>(seam.size()));
 }
 
-TEST_CASE("cohesive: without a threshold (tau = infinity) the squares never separate") {
+TEST_CASE("cohesive: under tau timing without a threshold (tau = infinity) the squares never separate") {
   InterpolationParams params;
+  params.cohesive.timing = CutTiming::kTau;
   params.cohesive.tau = std::numeric_limits<double>::infinity();
   const std::vector<double> gaps = gapsAlongSweep(params, {0.5, 0.9});
   INFO("gaps / size: " << gaps[0] << ", " << gaps[1]);
@@ -96,8 +100,9 @@ TEST_CASE("cohesive: without a threshold (tau = infinity) the squares never sepa
   REQUIRE(gaps[1] < 1e-2);
 }
 
-TEST_CASE("cohesive: a lower tau separates the squares earlier") {
+TEST_CASE("cohesive: under tau timing a lower tau separates the squares earlier") {
   InterpolationParams loose, sticky;
+  loose.cohesive.timing = sticky.cohesive.timing = CutTiming::kTau;
   loose.cohesive.tau = 1e-3;
   sticky.cohesive.tau = 1e-2;
   const std::vector<double> at = {0.3, 0.5, 0.7, 0.9};
@@ -123,12 +128,13 @@ TEST_CASE("cohesive: alpha weighs shear (along the edge) against stretch (across
   REQUIRE(pairEnergy(0.8, {d, 0}) < pairEnergy(0.2, {d, 0}));
 }
 
-TEST_CASE("cohesive: a clamped pair costs tau and exerts no force") {
+TEST_CASE("cohesive: under tau timing a clamped pair costs tau and exerts no force") {
   Multimesh mesh(6, {{0, 1, 4}, {3, 2, 5}});
   Eigen::MatrixX2d X(6, 2);
   X << 0, 0, 1, 0, 0, 0, 1, 0, 0.5, 1, 0.5, -1;
   mesh.addKey(X, {{0, 1, 2, 3}}, {});
   CohesiveParams params;
+  params.timing = CutTiming::kTau;
   params.tau = 0.5;
   const CohesiveEnergy energy(mesh, {X}, params);
   Eigen::MatrixX2d x = X;
@@ -142,7 +148,7 @@ TEST_CASE("cohesive: a clamped pair costs tau and exerts no force") {
   REQUIRE(held[0] == 0);
 }
 
-TEST_CASE("cohesive: the frame where a cut lets go converges in a few dozen iterations, also with stiff pairs") {
+TEST_CASE("cohesive: under tau timing the frame where a cut lets go converges in a few dozen iterations, also with stiff pairs") {
   // Stiffer pairs with tau lowered by the same factor let go at the same w (the breaking pull is
   // sqrt(2 lambda tau l / 3)). With a stale H keeping the released pairs' springs until a step
   // failed, that frame took 46 (factor 1) and 375 (factor 16) iterations on the small squares.
@@ -154,6 +160,7 @@ TEST_CASE("cohesive: the frame where a cut lets go converges in a few dozen iter
     const auto f = test::gluedSquares(side, 1.0, 0.3);
     for (double factor : {1.0, 16.0}) {
       InterpolationParams params;
+      params.cohesive.timing = CutTiming::kTau;
       params.cohesive.lambda = 4000 * factor;
       params.cohesive.tau = 1e-3 / factor;
       Interpolator solver(f.mesh, params, SolverOptions{});

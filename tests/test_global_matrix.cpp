@@ -13,12 +13,13 @@ namespace {
 // The energies of the glued squares (side x side vertices each, cohesive pairs along the seam in
 // key 0) and a GlobalMatrix over them on one thread, in the mesh's own vertex order.
 struct GluedSquaresH {
-  explicit GluedSquaresH(int side = 8) : f(test::gluedSquares(side, 0.5, 0.2)) {}
+  explicit GluedSquaresH(int side = 8, CohesiveParams params = {})
+      : f(test::gluedSquares(side, 0.5, 0.2)), cohesive(f.mesh, keys, params) {}
   test::Fixture f;
   std::vector<Eigen::MatrixX2d> keys{f.mesh.keyPositions(0), f.mesh.keyPositions(1)};
   DeformationEnergy deformation{f.mesh.triangles(), keys,
                                 Eigen::VectorXd::Ones(static_cast<int>(f.mesh.triangles().size()))};
-  CohesiveEnergy cohesive{f.mesh, keys, CohesiveParams{}};
+  CohesiveEnergy cohesive;
   NonOverlap nonOverlap{f.mesh, 3.0};
   int n = f.mesh.vertexCount();
 
@@ -61,7 +62,10 @@ TEST_CASE("global matrix: translations are in the kernel of the ARAP and cohesiv
 }
 
 TEST_CASE("global matrix: the factor models a frame only near the weights, springs and pairs it was built for") {
-  GluedSquaresH g;
+  // The paper's timing: the pairs' weights move with w alone (the release ramps: the next case).
+  CohesiveParams tau;
+  tau.timing = CutTiming::kTau;
+  GluedSquaresH g(8, tau);
   auto H = g.make(1e-3, false);
   const std::vector<char> held(g.cohesive.terms().size(), 1);
   std::vector<char> released = held;
@@ -87,6 +91,21 @@ TEST_CASE("global matrix: the factor models a frame only near the weights, sprin
   CHECK_FALSE(H->models({w0, none, held}, 1.0));
   H->invalidate();
   CHECK_FALSE(H->models({w0, springs, held}, 1.0));
+}
+
+TEST_CASE("global matrix: under release timing the factor models a frame only while every cut's ramp is within a tenth of its own") {
+  GluedSquaresH g;  // the default timing: the seam is closed in key 0, open in key 1
+  auto H = g.make(1e-3, false);
+  const std::vector<char> held(g.cohesive.terms().size(), 1);
+  const Eigen::VectorXd none;
+  const Eigen::VectorXd w0 = Eigen::Vector2d(0.5, 0.5);
+  H->factorize({w0, none, held});
+  REQUIRE(g.cohesive.ramp(0, w0) == Approx(0.5));
+  const Eigen::VectorXd small = Eigen::Vector2d(0.47, 0.53), large = Eigen::Vector2d(0.4, 0.6);
+  CHECK(std::abs(g.cohesive.ramp(0, small) - 0.5) < 0.1);
+  CHECK(H->models({small, none, held}, 1.0));
+  CHECK(std::abs(g.cohesive.ramp(0, large) - 0.5) > 0.1);
+  CHECK_FALSE(H->models({large, none, held}, 1.0));  // |w - w0|_1 = 0.2, well within the distance
 }
 
 TEST_CASE("global matrix: updating the factor for pairs that let go or engage solves as a factorization with those pairs does") {

@@ -104,12 +104,14 @@ TEST_CASE("solve worker: new parameters change the picture and leave no frame of
   const auto mesh = shared(f);
   const Timeline timeline = defaultTimeline({"glued", "apart"});
   const Eigen::VectorXd kappa = mesh->stiffnesses();
-  SolveWorker worker(mesh, timeline, {}, {}, kappa, {});
+  InterpolationParams paper;  // the paper's timing: a pair lets go past tau
+  paper.cohesive.timing = CutTiming::kTau;
+  SolveWorker worker(mesh, timeline, paper, {}, kappa, {});
   REQUIRE(waitUntil([&] { return !worker.stats().busy; }, 30));  // every frame, in order from 0
   worker.showFrame(8);
   const auto before = worker.latest();
   REQUIRE(before->index == 8);
-  InterpolationParams loose;
+  InterpolationParams loose = paper;
   loose.cohesive.tau = 1e-6;
   loose.cohesive.lambda = 1000;
   worker.setParameters(loose, {}, kappa);

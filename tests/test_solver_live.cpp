@@ -27,6 +27,7 @@ double largestDistance(const Eigen::MatrixX2d& a, const Eigen::MatrixX2d& b) {
 // Every parameter away from its default: stiffer, earlier-separating, shear-easy pairs, W_O on.
 InterpolationParams changedParams() {
   InterpolationParams p;
+  p.cohesive.timing = CutTiming::kTau;  // from the default release timing to the paper's
   p.cohesive.lambda = 900;
   p.cohesive.tau = 3e-4;
   p.cohesive.alpha = 0.8;

@@ -96,12 +96,13 @@ double CohesiveEnergy::evaluate(const Eigen::MatrixX2d& x, const Eigen::VectorXd
     const Eigen::Vector2d s = (x.row(p.a) + x.row(p.c) - x.row(p.b) - x.row(p.d)).transpose();
     const double sn = s.norm();
     const Eigen::Vector2d xhat = sn > 1e-12 * t.restLength ? Eigen::Vector2d(s / sn) : t.restDirection;
-    // Under CutTiming::kRelease alpha eases to 1/2 as the ramp r falls: at alpha != 1/2 the term
-    // depends on the seam's direction xhat, with curvature growing as (gap / edge)^2, and a seam
-    // that is letting go has a large gap (no tau clamps it): cell-splitting's cells stalled the
-    // solve (no step of 1e-3 of the local-global one lowered E). Glued (r = 1) it is alpha.
+    // Under CutTiming::kRelease alpha holds while the seam is glued (r = 1); a seam that lets go is
+    // isotropic (alpha = 1/2). At alpha != 1/2 the term depends on the seam's direction xhat, with
+    // curvature growing as (gap / edge)^2, and no tau clamps a parting seam: cell-splitting's
+    // solves stalled or ran to the cap on 16 frames with alpha eased as r^2, none with this. The
+    // switch costs nothing visible: where r leaves 1 the gap is still closed.
     const double r = params_.timing == CutTiming::kRelease ? ramp(static_cast<int>(j), w) : 1.0;
-    const double alpha = 0.5 + (params_.alpha - 0.5) * r * r;
+    const double alpha = r >= 1 ? params_.alpha : 0.5;
     const Eigen::Matrix2d P = alpha * Eigen::Matrix2d::Identity() + (1.0 - 2.0 * alpha) * xhat * xhat.transpose();
     const Eigen::Vector2d Pu = P * u, Pv = P * v;
     const double scale = t.restLength / 3.0 * params_.lambda;
