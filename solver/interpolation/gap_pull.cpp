@@ -1,6 +1,7 @@
 #include "interpolation/gap_pull.h"
 
 #include <Eigen/LU>
+#include <cmath>
 #include <map>
 #include <stdexcept>
 #include <tuple>
@@ -118,7 +119,7 @@ void GapPull::freezeRotations(const Eigen::MatrixX2d& x) {
   }
 }
 
-std::vector<Eigen::Matrix2d> GapPull::rotations(const Eigen::MatrixX2d& x, const Eigen::VectorXd& w) const {
+std::vector<Eigen::Matrix2d> GapPull::rotations(const Eigen::MatrixX2d& x, const Eigen::VectorXd& w, const GroupAngles& turn) const {
   // Per chain and open key (in the order of its pulls' key lists): the rotation minimizing the
   // chain's pulls, the closest to sum_p k_p [o ((u + v/2) U^T + (v + u/2) V^T) + gamma_p B_p].
   size_t width = 0;
@@ -136,15 +137,24 @@ std::vector<Eigen::Matrix2d> GapPull::rotations(const Eigen::MatrixX2d& x, const
       const double k = pullShare * w(pull.key[i]) * pull.restLength;
       if (k <= 0) continue;
       S[pull.chain * width + i] += k * (open * ((u + 0.5 * v) * pull.U[i].transpose() + (v + 0.5 * u) * pull.V[i].transpose()) +
-                                        anchorOf(open, pull.U[i], pull.V[i]) * pull.R[i]);
+                                        anchorOf(open, pull.U[i], pull.V[i]) * turn.of(pull.pair.a) * pull.R[i]);
     }
   }
   for (Eigen::Matrix2d& m : S) m = m.isZero(0) ? Eigen::Matrix2d::Identity() : closestRotation(m);
   return S;
 }
 
-double GapPull::evaluate(const Eigen::MatrixX2d& x, const Eigen::VectorXd& w, Eigen::MatrixX2d& gradient) const {
-  const std::vector<Eigen::Matrix2d> turn = rotations(x, w);
+Eigen::Matrix2d GroupAngles::of(int v) const {
+  if (!groups || angle.empty()) return Eigen::Matrix2d::Identity();
+  const double a = angle[static_cast<size_t>(groups->groupOf(v))];
+  Eigen::Matrix2d r;
+  r << std::cos(a), -std::sin(a), std::sin(a), std::cos(a);
+  return r;
+}
+
+double GapPull::evaluate(const Eigen::MatrixX2d& x, const Eigen::VectorXd& w, Eigen::MatrixX2d& gradient,
+                         const GroupAngles& angles, std::vector<double>* angleGradient) const {
+  const std::vector<Eigen::Matrix2d> turn = rotations(x, w, angles);
   size_t width = 0;
   for (const Pull& pull : pulls_) width = std::max(width, pull.key.size());
   double energy = 0;
@@ -163,7 +173,11 @@ double GapPull::evaluate(const Eigen::MatrixX2d& x, const Eigen::VectorXd& w, Ei
       const double gamma = anchorOf(open, pull.U[i], pull.V[i]);
       const Eigen::Matrix2d& R = turn[pull.chain * width + i];
       const Eigen::Vector2d du = u - open * R * pull.U[i], dv = v - open * R * pull.V[i];
-      energy += weight * scale * (du.squaredNorm() + du.dot(dv) + dv.squaredNorm() + gamma * (R - pull.R[i]).squaredNorm());
+      const Eigen::Matrix2d B = angles.of(p.a) * pull.R[i];
+      energy += weight * scale * (du.squaredNorm() + du.dot(dv) + dv.squaredNorm() + gamma * (R - B).squaredNorm());
+      // gamma |R - Rot(theta) B|^2 = gamma (4 - 4 cos(phi_R - theta - beta)): d/d theta = 4 gamma (R^T B)(1, 0).
+      if (angleGradient && !angleGradient->empty())
+        (*angleGradient)[static_cast<size_t>(angles.groups->groupOf(p.a))] += weight * scale * gamma * 4 * (R.transpose() * B)(1, 0);
       // R minimizes the chain's energy, so the gradient is the one at fixed R.
       const Eigen::Vector2d gu = weight * scale * (2.0 * du + dv), gv = weight * scale * (du + 2.0 * dv);
       gradient.row(p.a) += gu.transpose();

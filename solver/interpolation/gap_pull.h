@@ -11,20 +11,34 @@
 // R_j, one per cut (its pairs end to end) and open key, is the rotation that minimizes the cut's
 // brackets (a local step, as ARAP's rotations: the gradient is the brackets' at fixed R_j), so Q
 // turns with the pieces and the cut's gap turns as one (one rotation per pair tore the edges of
-// cell-splitting's cells apart). B_j, the rotation of the cut's
-// neighbourhood in the frame's blend of the keys relative to key j (taken once per frame,
-// freezeRotations), anchors it while the sides are shut and u, v say nothing of a direction:
-// gamma_j = 0.1 o^2 (|U_j|^2 + |V_j|^2). Q is the cohesive spring's form at alpha = 1/2, so the
+// cell-splitting's cells apart). B_j, the rotation of the cut's neighbourhood in the frame's blend
+// of the keys relative to key j (freezeRotations, once per frame) turned by the angle its
+// placement group stands from the blend (GroupAngles), anchors it while the sides are shut and u,
+// v say nothing of a direction: gamma_j = 0.1 o^2 (|U_j|^2 + |V_j|^2). Turned with the group,
+// W_G is invariant under the group's turn, as placement (which turns groups by E_P alone)
+// requires; with B_j frozen in the world, the solves crawled or stalled (continental-drift 41 of
+// 121 frames converged) and a placement minimizing E_P and the anchor together jumped where the
+// pull ends (chomp 27x on its last frame). Q is the cohesive spring's form at alpha = 1/2, so the
 // pull joins the pair's spring in the global matrix.
 #pragma once
 
 #include "interpolation/cohesive_energy.h"
+#include "interpolation/placement.h"
 #include "multimesh/multimesh.h"
 
 #include <Eigen/Core>
 #include <vector>
 
 namespace ib {
+
+// Per placement group, the angle (rad) by which the group stands turned from the frame's blend
+// (its Procrustes angle): the anchors turn with it, so W_G does not change when a group turns.
+// Empty: no turn.
+struct GroupAngles {
+  const PlacementGroups* groups = nullptr;
+  std::vector<double> angle;  // one per group of *groups
+  Eigen::Matrix2d of(int v) const;  // the rotation of vertex v's group
+};
 
 class GapPull {
  public:
@@ -39,8 +53,11 @@ class GapPull {
   // Takes B_j for every pull and open key from x (n x 2, the frame's blend): at the start of a frame's solve.
   void freezeRotations(const Eigen::MatrixX2d& x);
 
-  // Returns W_G at x with weights w and the frozen rotations, and adds its gradient (n x 2).
-  double evaluate(const Eigen::MatrixX2d& x, const Eigen::VectorXd& w, Eigen::MatrixX2d& gradient) const;
+  // Returns W_G at x with weights w, the anchors B_j turned by their group's angle, and adds its
+  // gradient at fixed angles (n x 2); with angleGradient (one entry per group, zeroed by the
+  // caller), also adds d W_G / d angle per group, for the caller to carry through the angles.
+  double evaluate(const Eigen::MatrixX2d& x, const Eigen::VectorXd& w, Eigen::MatrixX2d& gradient,
+                  const GroupAngles& angles = {}, std::vector<double>* angleGradient = nullptr) const;
 
   // The isotropic spring constant of pull p's pair at weights w (sum over its open keys of
   // w_j (1 - r) l/3 lambda), for the global matrix; pair(p) its vertices.
@@ -68,7 +85,7 @@ class GapPull {
   };
   CohesiveParams params_;
   // Per chain and open key, the chain's minimizing rotation at x (chain * width + key slot).
-  std::vector<Eigen::Matrix2d> rotations(const Eigen::MatrixX2d& x, const Eigen::VectorXd& w) const;
+  std::vector<Eigen::Matrix2d> rotations(const Eigen::MatrixX2d& x, const Eigen::VectorXd& w, const GroupAngles& turn) const;
 
   std::vector<Pull> pulls_;
   int chains_ = 0;

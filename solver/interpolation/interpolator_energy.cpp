@@ -3,6 +3,7 @@
 // placement of an iterate by the groups its links hold together.
 #include "interpolation/interpolator_impl.h"
 
+#include <cmath>
 #include <omp.h>
 #include <stdexcept>
 
@@ -26,7 +27,7 @@ double springEnergyOf(const Eigen::VectorXd& c, const Eigen::MatrixX2d& target, 
 
 }  // namespace
 
-void Interpolator::Impl::evaluateState(const Frame& frame, State& s, bool placed) const {
+void Interpolator::Impl::evaluateState(const Frame& frame, State& s) const {
   const int n = vertexCount();
   s.gradient.resize(n, 2);
   // E_P first: it also initializes the gradient. Each thread sums its own vertices; the sums
@@ -57,47 +58,56 @@ void Interpolator::Impl::evaluateState(const Frame& frame, State& s, bool placed
   if (frame.springs.size()) s.energy += springEnergyOf(frame.springs, frame.springTarget, s.x, s.gradient);
   s.energy += deformation_->evaluate(s.x, frame.keys, s.gradient, vertexSplit_, triangleSplit_, params_.metric);
   s.energy += cohesive_->evaluate(s.x, frame.w, s.gradient, s.held);
-  s.energy += gapPull_->evaluate(s.x, frame.w, s.gradient);
-  if (placed) projectTurns(frame, s);
+  addGapPull(frame, s);
   s.contacts.clear();
   if (params_.nonOverlap) s.energy += nonOverlap_->evaluate(s.x, frame.participants, s.gradient, s.contacts);
 }
 
-void Interpolator::Impl::projectTurns(const Frame& frame, State& s) const {
-  // W_G's anchor to the frozen rotations B_j is not invariant under a turn of the group it joins,
-  // but the placement turns every group by E_P alone (align): the gradient's turn component there
-  // is not the iteration's to reduce, and the stopping rule would wait for it in vain
-  // (continental-drift: 500 iterations at E constant to 8 digits). It is taken out, per group
-  // with an active pull.
-  std::vector<char> pulled(static_cast<size_t>(groups_.groupCount()), 0);
-  bool any = false;
-  for (int p = 0; p < gapPull_->size(); ++p)
-    if (gapPull_->springConstant(p, frame.w) > 0) {
-      pulled[groups_.groupOf(gapPull_->pair(p).a)] = 1;
-      any = true;
-    }
-  if (!any) return;
+void Interpolator::Impl::addGapPull(const Frame& frame, State& s) const {
+  bool pulling = false;
+  for (int p = 0; p < gapPull_->size() && !pulling; ++p) pulling = gapPull_->springConstant(p, frame.w) > 0;
+  if (!pulling) return;
+  // Each group's angle from the frame's blend (Procrustes, as align: atan2(sum a x b, sum a . b)
+  // with a, b the group's centred positions in x and in the blend turns x onto the blend, so x
+  // stands turned by minus that). W_G's anchors turn with it: W_G is invariant under a turn of
+  // the group, and align's turn (by E_P alone) is a true minimization. Its gradient carries
+  // d W_G / d angle through d angle / d x_v = -(D (b_y, -b_x) - C b) / (C^2 + D^2).
+  const int groups = groups_.groupCount();
   const auto& start = groups_.memberStart();
   const auto& members = groups_.members();
-  for (int k = 0; k < groups_.groupCount(); ++k) {
-    if (!pulled[k]) continue;
-    Eigen::Vector2d c(0, 0);
-    for (int i = start[k]; i < start[k + 1]; ++i) c += s.x.row(members[i]).transpose();
-    c /= std::max(1, start[k + 1] - start[k]);
-    double torque = 0, inertia = 0;
+  GroupAngles angles{&groups_, std::vector<double>(static_cast<size_t>(groups), 0.0)};
+  std::vector<Eigen::Vector2d> centre(static_cast<size_t>(groups)), target(static_cast<size_t>(groups));
+  std::vector<double> dots(static_cast<size_t>(groups)), crosses(static_cast<size_t>(groups));
+  for (int k = 0; k < groups; ++k) {
+    Eigen::Vector2d c(0, 0), q(0, 0);
     for (int i = start[k]; i < start[k + 1]; ++i) {
-      const int v = members[i];
-      const double px = s.x(v, 0) - c.x(), py = s.x(v, 1) - c.y();
-      torque += px * s.gradient(v, 1) - py * s.gradient(v, 0);
-      inertia += px * px + py * py;
+      c += s.x.row(members[i]).transpose();
+      q += frame.blend.row(members[i]).transpose();
     }
-    if (inertia <= 0) continue;
-    const double turn = torque / inertia;
+    const double count = std::max(1, start[k + 1] - start[k]);
+    centre[k] = c / count;
+    target[k] = q / count;
+    double dot = 0, cross = 0;
     for (int i = start[k]; i < start[k + 1]; ++i) {
       const int v = members[i];
-      const double px = s.x(v, 0) - c.x(), py = s.x(v, 1) - c.y();
-      s.gradient(v, 0) += turn * py;
-      s.gradient(v, 1) -= turn * px;
+      const Eigen::Vector2d a = s.x.row(v).transpose() - centre[k], b = frame.blend.row(v).transpose() - target[k];
+      dot += a.dot(b);
+      cross += a.x() * b.y() - a.y() * b.x();
+    }
+    dots[k] = dot;
+    crosses[k] = cross;
+    angles.angle[k] = -std::atan2(cross, dot);
+  }
+  std::vector<double> dAngle(static_cast<size_t>(groups), 0.0);
+  s.energy += gapPull_->evaluate(s.x, frame.w, s.gradient, angles, &dAngle);
+  for (int k = 0; k < groups; ++k) {
+    const double n = dots[k] * dots[k] + crosses[k] * crosses[k];
+    if (dAngle[k] == 0 || n <= 0) continue;
+    for (int i = start[k]; i < start[k + 1]; ++i) {
+      const int v = members[i];
+      const Eigen::Vector2d b = frame.blend.row(v).transpose() - target[k];
+      const Eigen::Vector2d dTheta = -(dots[k] * Eigen::Vector2d(b.y(), -b.x()) - crosses[k] * b) / n;
+      s.gradient.row(v) += dAngle[k] * dTheta.transpose();
     }
   }
 }
@@ -135,7 +145,7 @@ EnergyEvaluation Interpolator::Impl::evaluate(const Eigen::MatrixX2d& x, const E
   const Frame frame = makeFrame(w, nullptr);
   State s;
   s.x = toLayout(x, originalOf_) / scale_;
-  evaluateState(frame, s, false);  // the true gradient: x was not placed by align
+  evaluateState(frame, s);
   return {s.energy, fromLayout(s.gradient, originalOf_) / scale_};
 }
 

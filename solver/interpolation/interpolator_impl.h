@@ -57,12 +57,12 @@ class Interpolator::Impl {
   GlobalMatrixSources matrixSources() const;  // what H is built from, with the current parameters
   bool cancelled() const { return cancel_ && cancel_->load(std::memory_order_relaxed); }
   Frame makeFrame(const Eigen::VectorXd& w, const VertexSprings* springs) const;
-  // placed: x comes from the solve (align), so the turn component of pulled groups is taken out (projectTurns).
-  void evaluateState(const Frame& frame, State& state, bool placed = true) const;
+  void evaluateState(const Frame& frame, State& state) const;
   // Only what placement groups need: held pairs and non-overlap contacts.
   void evaluateLinks(const Frame& frame, State& state) const;
   void align(const Frame& frame, const State& reference, Eigen::MatrixX2d& x);
-  void projectTurns(const Frame& frame, State& s) const;
+  // W_G with its anchors turned with their groups (gap_pull.h, GroupAngles), added to s.
+  void addGapPull(const Frame& frame, State& s) const;
   // One safeguarded iteration from s: the Anderson candidate, else the plain step, else (if the
   // set of held pairs changed) a refactorization to retry with, else a backtracked plain
   // step. On kAccepted the new iterate is in candidate; plain is scratch.
