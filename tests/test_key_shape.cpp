@@ -27,7 +27,11 @@ Scene sceneWith(const std::vector<KeySpec>& keys) {
 KeySpec keyWithCut(const std::string& name, CutKind kind, Polyline points) {
   KeySpec k;
   k.name = name;
-  k.cuts.push_back({"c", kind, std::move(points)});
+  CutSpec cut;
+  cut.name = "c";
+  cut.kind = kind;
+  cut.points = std::move(points);
+  k.cuts.push_back(cut);
   return k;
 }
 

@@ -2,6 +2,8 @@
 // and time readout, the in / out range, and the scrubber with the timeline's marks at their times.
 #include "player/player_ui.h"
 
+#include "pipeline/cut_timing.h"
+
 #include <imgui.h>
 
 #include <algorithm>
@@ -19,10 +21,14 @@ constexpr ImU32 kKeyMark = IM_COL32(235, 200, 70, 255);
 constexpr ImU32 kBreakdown = IM_COL32(120, 180, 235, 255);
 constexpr ImU32 kPlayhead = IM_COL32(245, 140, 46, 255);
 constexpr ImU32 kTicks = IM_COL32(110, 114, 124, 255);
+constexpr ImU32 kRelease = IM_COL32(235, 80, 80, 255);  // a cut lets go
+constexpr ImU32 kGlue = IM_COL32(80, 200, 235, 255);    // a cut glues
 
 // The scrubber: the whole timeline as a track, the loop range lighter, solved frames as a thin
 // green line, a tick every frame (or every 5th / 10th when crowded), the marks as diamonds
-// (keys yellow with their names, breakdowns blue) and the playhead. Click or drag to scrub.
+// (keys yellow with their names, breakdowns blue), each cut's release (red) and glue (cyan) as a
+// line across the track with a triangle pointing down (lets go) or up (glues), its name on
+// hover, and the playhead. Click or drag to scrub.
 void scrubber(PlayerSession& session) {
   Transport& transport = session.transport();
   const Timeline& timeline = session.scene().scene.timeline;
@@ -58,6 +64,16 @@ void scrubber(PlayerSession& session) {
     const float textWidth = ImGui::CalcTextSize(mark.label.c_str()).x;  // left of the mark where the track ends
     const float textX = x + r + 2 + textWidth > origin.x + width ? x - r - 2 - textWidth : x + r + 2;
     draw->AddText(ImVec2(textX, origin.y), key ? kKeyMark : kBreakdown, mark.label.c_str());
+  }
+  for (const CutEvent& event : cutEvents(session.parameters().scene(session.scene().scene))) {
+    if (event.frame > frames - 1) continue;
+    const float x = xOf(event.frame), y = bottom - 6;
+    const ImU32 colour = event.glue ? kGlue : kRelease;
+    draw->AddLine(ImVec2(x, top), ImVec2(x, bottom), colour, 2);
+    if (event.glue) draw->AddTriangleFilled(ImVec2(x - 5, y + 4), ImVec2(x + 5, y + 4), ImVec2(x, y - 4), colour);
+    else draw->AddTriangleFilled(ImVec2(x - 5, y - 4), ImVec2(x + 5, y - 4), ImVec2(x, y + 4), colour);
+    if (ImGui::IsMouseHoveringRect(ImVec2(x - 5, top), ImVec2(x + 5, bottom)))
+      ImGui::SetTooltip("cut \"%s\" %s at frame %d", event.cut.c_str(), event.glue ? "glues" : "lets go", event.frame);
   }
   if (!weights) {
     const float x = xOf(transport.frame());

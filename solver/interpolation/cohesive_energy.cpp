@@ -41,22 +41,33 @@ double openWeight(const CohesiveTerm& t, const Eigen::VectorXd& w) {
 
 }  // namespace
 
-double releaseRamp(double openWeight, const CohesiveParams& params) {
-  const double lo = std::max(0.0, params.release - 0.5 * params.releaseWindow);
-  const double hi = std::min(1.0, params.release + 0.5 * params.releaseWindow);
+double releaseRamp(double openWeight, double release, double window) {
+  const double lo = std::max(0.0, release - 0.5 * window);
+  const double hi = std::min(1.0, release + 0.5 * window);
   if (openWeight <= lo) return 1;
   if (openWeight >= hi) return 0;
   const double u = (openWeight - lo) / (hi - lo);
   return 1 - u * u * (3 - 2 * u);
 }
 
-double pullFade(double openWeight, const CohesiveParams& params) {
-  const double hi = std::min(1.0, params.release + 0.5 * params.releaseWindow);
+double releaseRamp(double openWeight, const CohesiveParams& params) {
+  return releaseRamp(openWeight, params.release, params.releaseWindow);
+}
+
+double pullFade(double openWeight, double release, double window) {
+  const double hi = std::min(1.0, release + 0.5 * window);
   if (openWeight <= hi) return 1;
-  const double end = std::min(1.0, hi + params.releaseWindow);
+  const double end = std::min(1.0, hi + window);
   if (openWeight >= end) return 0;
   const double u = (openWeight - hi) / (end - hi);
   return 1 - u * u * (3 - 2 * u);
+}
+
+CutRelease timingOf(int term, const CohesiveParams& params) {
+  CutRelease own = term >= 0 && term < static_cast<int>(params.perTerm.size()) ? params.perTerm[term] : CutRelease{};
+  if (std::isnan(own.release)) own.release = params.release;
+  if (std::isnan(own.window)) own.window = params.releaseWindow;
+  return own;
 }
 
 double CohesiveEnergy::termWeight(int term, const Eigen::VectorXd& w) const {
@@ -66,16 +77,18 @@ double CohesiveEnergy::termWeight(int term, const Eigen::VectorXd& w) const {
   // The closing keys share r between them (their weights sum to 1 - o), the open keys 1 - r
   // (gap_pull.h): the gap is then (1 - r) of the drawn one, whatever the weights' split.
   const double open = openWeight(t, w);
-  return open < 1 ? releaseRamp(open, params_) * weight / (1 - open) : 0.0;
+  return open < 1 ? ramp(term, w) * weight / (1 - open) : 0.0;
 }
 
 double CohesiveEnergy::ramp(int term, const Eigen::VectorXd& w) const {
-  return params_.timing == CutTiming::kTau ? 1.0 : releaseRamp(openWeight(terms_[term], w), params_);
+  if (params_.timing == CutTiming::kTau) return 1.0;
+  const CutRelease own = timingOf(term, params_);
+  return releaseRamp(openWeight(terms_[term], w), own.release, own.window);
 }
 
 bool CohesiveEnergy::glued(int term, const Eigen::VectorXd& w) const {
   const CohesiveTerm& t = terms_[term];
-  return w(t.key) > 0 && releaseRamp(openWeight(t, w), params_) == 1;
+  return w(t.key) > 0 && ramp(term, w) == 1;
 }
 
 double CohesiveEnergy::springConstant(int term) const {

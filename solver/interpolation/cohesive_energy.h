@@ -23,12 +23,15 @@ namespace ib {
 // CutTiming::kRelease: the share of a cut's closing pull at the open keys' total weight o, 1 below
 // release - window/2, 0 above release + window/2 (both kept within [0, 1]), a smoothstep between. The gap pull (gap_pull.h)
 // takes the rest, 1 - r.
-double releaseRamp(double openWeight, const CohesiveParams& params);
+double releaseRamp(double openWeight, double release, double window);
+double releaseRamp(double openWeight, const CohesiveParams& params);  // the scene's release and window
 // The gap pull's fade after the window: 1 up to release + window/2, 0 from a window further on
 // (both kept within [0, 1]), a smoothstep between. Once the closing pull is gone the pieces are
 // free again (placed on the blend, shaped by E_D), where the pull's target, the open keys' gap
 // scaled by o, already put them.
-double pullFade(double openWeight, const CohesiveParams& params);
+double pullFade(double openWeight, double release, double window);
+// Term j's release and window: its cut's own (CohesiveParams::perTerm) or the scene's.
+CutRelease timingOf(int term, const CohesiveParams& params);
 
 struct CohesiveTerm {
   int key = 0;

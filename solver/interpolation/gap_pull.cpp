@@ -47,6 +47,7 @@ GapPull::GapPull(const Multimesh& mesh, const std::vector<Eigen::MatrixX2d>& key
     const CohesiveTerm& term = terms[entry.second];
     Pull pull;
     pull.pair = term.pair;
+    pull.term = entry.second;
     pull.restLength = term.restLength;
     if (triangleAt[pull.pair.a] < 0 || triangleAt[pull.pair.c] < 0)
       throw std::invalid_argument("gap pull: a cohesive pair's vertex is in no triangle");
@@ -93,7 +94,8 @@ double GapPull::share(const Pull& pull, const Eigen::VectorXd& w) const {
   double open = 0;
   for (int k : pull.key) open += w(k);
   if (open <= 0 || open >= 1) return 0;  // no closing pull to part from, or nothing left of it
-  return (1 - releaseRamp(open, params_)) * pullFade(open, params_) / open;  // per unit of an open key's weight
+  const CutRelease own = timingOf(pull.term, params_);
+  return (1 - releaseRamp(open, own.release, own.window)) * pullFade(open, own.release, own.window) / open;  // per unit of an open key's weight
 }
 
 double GapPull::springConstant(int p, const Eigen::VectorXd& w) const {

@@ -74,6 +74,7 @@ class GapPull {
 
   struct Pull {
     CohesivePair pair;
+    int term = 0;           // its first cohesive term (for its cut's timing)
     double restLength = 0;  // l, as the cohesive term's
     Triangle at, ac;        // a triangle at vertex a and one at vertex c
     // Per open key: its index, U_j, V_j, and D(X_j)^{-1} of the two triangles.

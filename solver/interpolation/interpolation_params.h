@@ -6,6 +6,9 @@
 
 #include "interpolation/shape_metric.h"
 
+#include <limits>
+#include <vector>
+
 namespace ib {
 
 // When a cut lets go (docs/solver.md, "Cut timing").
@@ -13,6 +16,12 @@ enum class CutTiming {
   kRelease,  // by the weights: the closed keys' pull fades as the open keys' weight o passes
              // `release` over `releaseWindow`, and the open keys pull the sides to their drawn gap
   kTau,      // by the energy: a pair lets go when its cohesive energy exceeds tau (the paper)
+};
+
+// One cut's own timing (a scene cut's "release" and "release_window"); NaN: the scene's.
+struct CutRelease {
+  double release = std::numeric_limits<double>::quiet_NaN();
+  double window = std::numeric_limits<double>::quiet_NaN();
 };
 
 // Cohesive parameters in normalized units (lengths divided by the shape size).
@@ -28,6 +37,10 @@ struct CohesiveParams {
                                // within [0, 1] (so a closed key is glued and an open key open);
                                // default 1: the sides part over the whole segment, fastest at
                                // `release` (bench pops: every test scene within 2.2x its median)
+  // Per cohesive term, in the multimesh's order (key 0's pairs, then key 1's, ...): the term's
+  // cut's own timing where the scene gives one (pipeline/cut_release.h). Empty: the two above
+  // for every cut. Default empty.
+  std::vector<CutRelease> perTerm = {};
 };
 
 struct InterpolationParams {

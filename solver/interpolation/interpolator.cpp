@@ -115,6 +115,7 @@ Interpolator::Impl::Impl(ThreadLayout layout, const InterpolationParams& params,
   // with zero weight.
   vertexWeight_ = 1.0 / mesh.vertexCount();
   cohesive_ = std::make_unique<CohesiveEnergy>(mesh, keys_, params.cohesive);
+  checkCutTimings(params);
   gapPull_ = std::make_unique<GapPull>(mesh, keys_, *cohesive_, params.cohesive);
   nonOverlap_ = std::make_unique<NonOverlap>(mesh, 0.0);  // its penalty follows the stiffness scale
   updateStiffnessScale();

@@ -58,6 +58,8 @@ class Interpolator::Impl {
   bool cancelled() const { return cancel_ && cancel_->load(std::memory_order_relaxed); }
   Frame makeFrame(const Eigen::VectorXd& w, const VertexSprings* springs) const;
   void evaluateState(const Frame& frame, State& state) const;
+  // std::invalid_argument unless CohesiveParams::perTerm is empty or one per cohesive term.
+  void checkCutTimings(const InterpolationParams& params) const;
   // Only what placement groups need: held pairs and non-overlap contacts.
   void evaluateLinks(const Frame& frame, State& state) const;
   void align(const Frame& frame, const State& reference, Eigen::MatrixX2d& x);

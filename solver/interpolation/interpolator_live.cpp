@@ -21,6 +21,10 @@ void validateInterpolationParams(const InterpolationParams& p) {
   require(c.alpha >= 0 && c.alpha <= 1, "alpha", "must be in [0, 1]");
   require(c.release >= 0 && c.release <= 1, "release", "must be in [0, 1]");
   require(c.releaseWindow > 0 && c.releaseWindow <= 1, "release_window", "must be in (0, 1]");
+  for (const CutRelease& own : c.perTerm) {
+    require(std::isnan(own.release) || (own.release >= 0 && own.release <= 1), "a cut's release", "must be in [0, 1]");
+    require(std::isnan(own.window) || (own.window > 0 && own.window <= 1), "a cut's release_window", "must be in (0, 1]");
+  }
 }
 
 void validateStiffness(const Eigen::VectorXd& kappa, int triangleCount) {
@@ -42,8 +46,16 @@ void Interpolator::Impl::forgetHistory() {
   global_->invalidate();
 }
 
+void Interpolator::Impl::checkCutTimings(const InterpolationParams& params) const {
+  const size_t terms = cohesive_->terms().size();
+  if (!params.cohesive.perTerm.empty() && params.cohesive.perTerm.size() != terms)
+    throw std::invalid_argument("cut timings: expected one per cohesive term (" + std::to_string(terms) + "), got " +
+                                std::to_string(params.cohesive.perTerm.size()));
+}
+
 void Interpolator::Impl::setParameters(const InterpolationParams& params) {
   validateInterpolationParams(params);
+  checkCutTimings(params);
   params_ = params;
   cohesive_->setParams(params.cohesive);
   gapPull_->setParams(params.cohesive);

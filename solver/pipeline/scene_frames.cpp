@@ -1,6 +1,7 @@
 #include "pipeline/scene_frames.h"
 
 #include "core/error.h"
+#include "pipeline/cut_timing.h"
 #include "multimesh/multimesh.h"
 
 #include <cmath>
@@ -17,6 +18,7 @@ SceneFrameSetup sceneFrameSetup(const Scene& scene, const Multimesh& mesh, const
   SceneFrameSetup setup;
   setup.timeline = scene.timeline;
   setup.interpolation = scene.interpolation;
+  setup.interpolation.cohesive.perTerm = cutReleases(scene, mesh);
   setup.dynamics = scene.dynamics;
   if (!options.dynamics) setup.dynamics.epsilon = 0;
   setup.stiffness = mesh.stiffnesses() * options.kappaScale;

@@ -131,23 +131,8 @@ std::vector<ParameterSpec> makeTable() {
           .meaning("cohesive stiffness (eq. 10): how hard glued cuts hold shut").live()
           .access([](const Scene& s) { return s.interpolation.cohesive.lambda; },
                   [](Scene& s, double v) { s.interpolation.cohesive.lambda = v; }));
-  add(Row("cut_timing", "solver.cut_timing")
-          .choice(int(solver.cohesive.timing), {{"release", "by the weights: release and release_window"},
-                                                 {"tau", "by the cohesive energy's threshold tau (the paper)"}})
-          .meaning("what decides when a cut lets go (docs/solver.md, \"Cut timing\")").live()
-          .access([](const Scene& s) { return double(s.interpolation.cohesive.timing); },
-                  [](Scene& s, double v) { s.interpolation.cohesive.timing = static_cast<CutTiming>(v); }));
-  add(Row("release", "solver.release").number(solver.cohesive.release, 0, 1)
-          .meaning("the weight of the keys where a cut is open at which it is half let go (0.5: halfway between the keys)")
-          .live()
-          .access([](const Scene& s) { return s.interpolation.cohesive.release; },
-                  [](Scene& s, double v) { s.interpolation.cohesive.release = v; }));
-  add(Row("release_window", "solver.release_window").number(solver.cohesive.releaseWindow, 0, 1).openMin()
-          .meaning("the span of that weight over which the sides part (or glue, on the way back)").live()
-          .access([](const Scene& s) { return s.interpolation.cohesive.releaseWindow; },
-                  [](Scene& s, double v) { s.interpolation.cohesive.releaseWindow = v; }));
   add(Row("tau", "solver.tau").number(solver.cohesive.tau, 0, 1e6).openMin().log().unit("normalized energy per pair")
-          .meaning("cohesive threshold (eq. 11): a glued pair lets go when l/3 d exceeds it, lengths in shape sizes")
+          .meaning("cohesive threshold (eq. 11), cut_timing tau: a glued pair lets go when l/3 d exceeds it, lengths in shape sizes")
           .live()
           .access([](const Scene& s) { return s.interpolation.cohesive.tau; },
                   [](Scene& s, double v) { s.interpolation.cohesive.tau = v; }));
@@ -164,6 +149,23 @@ std::vector<ParameterSpec> makeTable() {
           .meaning("how each triangle's keys are averaged (docs/solver.md, \"The shape metric\")").live()
           .access([](const Scene& s) { return double(s.interpolation.metric); },
                   [](Scene& s, double v) { s.interpolation.metric = static_cast<ShapeMetric>(v); }));
+
+  // When cuts let go (docs/scene-format.md, "Cut timing"); each cut may give its own.
+  add(Row("cut_timing", "solver.cut_timing")
+          .choice(int(solver.cohesive.timing), {{"release", "by the weights: release and release_window"},
+                                                 {"tau", "by the cohesive energy's threshold tau (the paper)"}})
+          .meaning("what decides when a cut lets go (docs/solver.md, \"Cut timing\")").live()
+          .access([](const Scene& s) { return double(s.interpolation.cohesive.timing); },
+                  [](Scene& s, double v) { s.interpolation.cohesive.timing = static_cast<CutTiming>(v); }));
+  add(Row("release", "solver.release").number(solver.cohesive.release, 0, 1)
+          .meaning("the weight of the keys where a cut is open at which it is half let go (0.5: halfway between the keys)")
+          .live()
+          .access([](const Scene& s) { return s.interpolation.cohesive.release; },
+                  [](Scene& s, double v) { s.interpolation.cohesive.release = v; }));
+  add(Row("release_window", "solver.release_window").number(solver.cohesive.releaseWindow, 0, 1).openMin()
+          .meaning("the span of that weight over which the sides part (or glue, on the way back)").live()
+          .access([](const Scene& s) { return s.interpolation.cohesive.releaseWindow; },
+                  [](Scene& s, double v) { s.interpolation.cohesive.releaseWindow = v; }));
 
   // The timeline's own fields (its marks are the scene's structure, not parameters).
   add(Row("fps", "timeline.fps").number(timeline.fps, 0, 1000).openMin().unit("frames/s")

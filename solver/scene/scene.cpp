@@ -33,7 +33,7 @@ CutKind cutKind(const json& cut, const Context& at) {
 
 CutSpec parseCut(const json& j, const Context& key, size_t index) {
   const Context first = element(j, key, "cut", index);
-  requireObject(j, first, {"name", "kind", "points"});
+  requireObject(j, first, {"name", "kind", "points", "release", "release_window"});
   CutSpec cut;
   cut.name = text(j, "name", first);
   const Context at = key.in("cut " + inQuotes(cut.name));
@@ -46,6 +46,8 @@ CutSpec parseCut(const json& j, const Context& key, size_t index) {
   for (size_t i = 1; i < cut.points.size(); ++i)
     if ((cut.points[i] - cut.points[i - 1]).norm() < 1e-9)
       throw at.error("points " + std::to_string(i) + " and " + std::to_string(i + 1) + " coincide");
+  if (j.contains("release")) cut.release = number(j, "release", 0.5, at, 0, 1);
+  if (j.contains("release_window")) cut.releaseWindow = number(j, "release_window", 1, at, 0, 1, true);
   return cut;
 }
 
@@ -174,6 +176,7 @@ InputError dottedFeature(const Context& key, const std::string& f,
 // it is open; keys where it is closed draw it with the same kind.
 void checkCorrespondence(const Scene& scene, const Context& at) {
   std::map<std::string, std::pair<CutKind, std::vector<int>>> cuts;  // name -> kind, keys closed
+  std::vector<std::pair<int, const CutSpec*>> timings;               // every key's cuts
   for (int k = 0; k < static_cast<int>(scene.keys.size()); ++k)
     for (const CutSpec& c : scene.keys[k].cuts) {
       auto [it, fresh] = cuts.insert({c.name, {c.kind, {}}});
@@ -181,6 +184,22 @@ void checkCorrespondence(const Scene& scene, const Context& at) {
         throw at.in("cut " + inQuotes(c.name)).error("is a different kind in key " + inQuotes(scene.keys[k].name) +
                                                   " than in key " + inQuotes(scene.keys[it->second.second[0]].name));
       it->second.second.push_back(k);
+      timings.push_back({k, &c});
+    }
+  // A cut's own timing: the keys that close it agree, or leave it out.
+  for (size_t a = 0; a < timings.size(); ++a)
+    for (size_t b = 0; b < a; ++b) {
+      const CutSpec &x = *timings[a].second, &y = *timings[b].second;
+      if (x.name != y.name) continue;
+      const auto clash = [&](const std::optional<double>& p, const std::optional<double>& q, const std::string& field) {
+        if (p && q && *p != *q)
+          throw at.in("cut " + inQuotes(x.name)).error(field + " is " + std::to_string(*p) + " in key " +
+                                                    inQuotes(scene.keys[timings[a].first].name) + " and " + std::to_string(*q) +
+                                                    " in key " + inQuotes(scene.keys[timings[b].first].name) +
+                                                    ": give one value (in one key is enough)");
+      };
+      clash(x.release, y.release, "\"release\"");
+      clash(x.releaseWindow, y.releaseWindow, "\"release_window\"");
     }
   std::map<std::string, std::string> cutOfFeature;
   for (const auto& [name, cut] : cuts) {

@@ -14,6 +14,7 @@
 
 #include <Eigen/Core>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,10 @@ struct CutSpec {
   std::string name;
   CutKind kind = CutKind::kNotch;
   Polyline points;  // >= 2, drawing pixels
+  // This cut's own "release" in [0, 1] and "release_window" in (0, 1] (docs/scene-format.md, "Cut
+  // timing"); absent: the scene's solver.release and solver.release_window. Keys that close the
+  // same cut give the same values or none.
+  std::optional<double> release = {}, releaseWindow = {};
 };
 
 // The features a cut creates at its ends, named after it (see docs/scene-format.md, "Features and cuts"):
