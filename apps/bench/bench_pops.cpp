@@ -25,7 +25,9 @@ constexpr const char* kUsage =
     "frames (its first frame and steps), cuts (the scene's), then for the silhouette (the mesh's\n"
     "coverage at 1 drawing px) pop = the largest step's changed pixels over the segment's median,\n"
     "pop_frame, pop_share (that step's changed pixels over the silhouette before it), and the same\n"
-    "for the vertex RMS move, rms_pop and rms_pop_frame; min_area_ratio (a frame's area over the\n"
+    "for the vertex RMS move, rms_pop and rms_pop_frame; timing_pop, what the segment's timing alone\n"
+    "gives (its largest step of the weights over their median: an eased segment moves unevenly\n"
+    "whatever the shapes do); min_area_ratio (a frame's area over the\n"
     "area interpolated between the keys, sum_k w_k area(X_k)) and its frame; releases and glues (the\n"
     "frames where fewer or more cohesive pairs hold than on the frame before); pixel_steps and rms_steps,\n"
     "every step's changed pixels and RMS move (px) from the first frame on. A smooth segment has\n"
@@ -83,6 +85,7 @@ void run(const cli::Arguments& a, const BenchOutput& output) {
                         {"pop_share", s.maxPixelsShare},
                         {"rms_pop", ratio(s.maxRms, s.medianRms)},
                         {"rms_pop_frame", s.maxRmsFrame},
+                        {"timing_pop", s.timingPop},
                         {"min_area_ratio", s.minAreaRatio},
                         {"min_area_frame", s.minAreaFrame},
                         {"releases", s.releases},

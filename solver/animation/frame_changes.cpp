@@ -86,6 +86,9 @@ std::vector<SegmentChanges> segmentChanges(const Multimesh& mesh, const Timeline
     if (!current) return;
     current->medianPixels = median(current->pixelSteps);
     current->medianRms = median(current->rmsSteps);
+    const double typical = median(current->weightSteps);
+    const double largest = current->weightSteps.empty() ? 0 : *std::max_element(current->weightSteps.begin(), current->weightSteps.end());
+    current->timingPop = typical > 0 ? largest / typical : 1;
   };
   for (size_t f = 1; f < frames.size(); ++f) {
     const AnimationFrame& a = frames[f - 1];
@@ -114,6 +117,7 @@ std::vector<SegmentChanges> segmentChanges(const Multimesh& mesh, const Timeline
       const double move = std::sqrt((b.x - a.x).rowwise().squaredNorm().mean());
       current->pixelSteps.push_back(static_cast<double>(changed));
       current->rmsSteps.push_back(move);
+      current->weightSteps.push_back((b.weights - a.weights).lpNorm<1>());
       ++current->steps;
       if (changed > current->maxPixels) {
         current->maxPixels = static_cast<double>(changed);

@@ -33,6 +33,10 @@ struct SegmentChanges {
   int minAreaFrame = 0;
   // Every step's changed pixels and RMS move, in frame order (f = firstFrame + 1 + index).
   std::vector<double> pixelSteps, rmsSteps;
+  // The pop the segment's timing gives by itself: the largest step of the weights (L1) over the
+  // median. An eased segment moves unevenly whatever the shapes do (an ease-out curve 3.4x).
+  double timingPop = 1;
+  std::vector<double> weightSteps;
   // Frames f whose held cohesive pairs are fewer (releases) or more (glues) than frame f-1's.
   std::vector<int> releases, glues;
 };

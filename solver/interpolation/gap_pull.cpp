@@ -18,10 +18,11 @@ Eigen::Matrix2d edges(const Eigen::MatrixX2d& x, const Triangle& t) {
 }
 
 
-// gamma of a pull's key: how firmly its rotation keeps to the frozen one, kappa o^2 (|U|^2 + |V|^2),
-// the size of the pull's own term once the gap is open.
+// gamma of a pull's key: how firmly its rotation keeps to the anchor, kappa o^2 (|U|^2 + |V|^2),
+// a hundredth of the pull's own term once the gap is open (docs/solver.md, "Cut timing": 0.1
+// left growing-flower's and chinese-character's solves at the iteration cap on 19 frames).
 double anchorOf(double open, const Eigen::Vector2d& U, const Eigen::Vector2d& V) {
-  constexpr double kAnchor = 0.1;  // kappa
+  constexpr double kAnchor = 0.01;  // kappa
   return kAnchor * open * open * (U.squaredNorm() + V.squaredNorm());
 }
 

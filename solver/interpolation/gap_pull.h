@@ -14,7 +14,7 @@
 // cell-splitting's cells apart). B_j, the rotation of the cut's neighbourhood in the frame's blend
 // of the keys relative to key j (freezeRotations, once per frame) turned by the angle its
 // placement group stands from the blend (GroupAngles), anchors it while the sides are shut and u,
-// v say nothing of a direction: gamma_j = 0.1 o^2 (|U_j|^2 + |V_j|^2). Turned with the group,
+// v say nothing of a direction: gamma_j = 0.01 o^2 (|U_j|^2 + |V_j|^2). Turned with the group,
 // W_G is invariant under the group's turn, as placement (which turns groups by E_P alone)
 // requires; with B_j frozen in the world, the solves crawled or stalled (continental-drift 41 of
 // 121 frames converged) and a placement minimizing E_P and the anchor together jumped where the
