@@ -4,7 +4,9 @@
 #include "animation/frame_stream.h"
 #include "core/atomic_file.h"
 #include "play_fixtures.h"
+#include "pipeline/cut_timing.h"
 #include "player/player_session.h"
+#include "player/player_ui.h"
 
 #include <algorithm>
 #include <atomic>
@@ -210,4 +212,81 @@ TEST_CASE("play: at the default window size every parameter's name, the longest 
     INFO("row " << i << ": " << gaps[i] << " px between the name and its button");
     CHECK(gaps[i] >= 4);
   }
+}
+
+TEST_CASE("play: the scrubber marks where each cut lets go (red) and glues (cyan), at the frames the timeline crosses its "
+          "release", "[.window]") {
+  LiveWindow live(kScene);
+  const RgbaImage shot = live.shot("scrubber-cut-marks");
+  const std::vector<CutEvent> events = cutEvents(live.session.parameters().scene(live.session.scene().scene));
+  REQUIRE(events.size() == 2);  // square-arch-notch's loop: the notch lets go towards the arch, glues on the way back
+  REQUIRE_FALSE(events[0].glue);
+  REQUIRE(events[1].glue);
+  // The transport bar: the bottom kTransportHeight px left of the side panel. The key marks'
+  // yellow diamonds give the scrubber's scale: "square" at frame 0, "arch" at frame 24 (1 s at 24
+  // fps); their row is the track's middle.
+  const int top = kHeight - static_cast<int>(play::kTransportHeight), right = kWidth - static_cast<int>(play::kSidePanelWidth);
+  const auto near = [&](const uint8_t* p, int r, int g, int b) {
+    return std::abs(p[0] - r) <= 12 && std::abs(p[1] - g) <= 12 && std::abs(p[2] - b) <= 12;
+  };
+  int trackRow = -1, widest = 0;  // the row of the widest run of yellow: the diamonds' middle (the names are thin strokes)
+  for (int y = top; y < kHeight; ++y)
+    for (int x = 0, run = 0; x < right; ++x) {
+      run = near(shot.at(x, y), 235, 200, 70) ? run + 1 : 0;
+      if (run > widest) widest = run, trackRow = y;
+    }
+  REQUIRE(trackRow >= 0);
+  // Centres of the runs of yellow along that row, a gap of up to 4 px joined (the paused
+  // playhead, 2 px wide, crosses frame 0's diamond).
+  std::vector<double> diamonds;
+  for (int x = 0, start = -1, last = -100; x <= right; ++x) {
+    const bool yellow = x < right && near(shot.at(x, trackRow), 235, 200, 70);
+    if (yellow) {
+      if (start >= 0 && x - last > 5) diamonds.push_back(0.5 * (start + last)), start = -1;
+      if (start < 0) start = x;
+      last = x;
+    }
+    if (x == right && start >= 0) diamonds.push_back(0.5 * (start + last));
+  }
+  REQUIRE(diamonds.size() == 2);
+  const int frames = live.session.transport().frameCount();
+  const auto xOf = [&](double frame) { return diamonds[0] + frame / 24.0 * (diamonds[1] - diamonds[0]); };
+  for (const CutEvent& event : events) {
+    const double expected = xOf(event.frame);
+    // The mark's colour in a column within 2 px of where its frame sits, anywhere down the bar.
+    int found = 0;
+    for (int x = static_cast<int>(expected) - 2; x <= static_cast<int>(expected) + 2; ++x)
+      for (int y = top; y < kHeight; ++y)
+        found += event.glue ? near(shot.at(x, y), 80, 200, 235) : near(shot.at(x, y), 235, 80, 80);
+    INFO((event.glue ? "glue" : "release") << " at frame " << event.frame << " of " << frames << ", expected x " << expected
+                                           << " (frame 0 at " << diamonds[0] << ", 24 at " << diamonds[1] << ")");
+    CHECK(found >= 10);
+  }
+  // And nowhere else: the marks' colours stay within 8 px of their frames (a triangle 10 px wide).
+  int stray = 0;
+  for (int y = top; y < kHeight; ++y)
+    for (int x = 0; x < right; ++x) {
+      const uint8_t* p = shot.at(x, y);
+      if (!near(p, 235, 80, 80) && !near(p, 80, 200, 235)) continue;
+      bool close = false;
+      for (const CutEvent& event : events)
+        close = close || std::abs(x - xOf(event.frame)) <= 8;
+      if (!close) UNSCOPED_INFO("stray mark colour at (" << x << ", " << y << ")");
+      stray += !close;
+    }
+  CHECK(stray == 0);
+  // The pointer over the release mark (real input): a tooltip names the cut, drawn beside it.
+  const int markX = static_cast<int>(std::lround(xOf(events[0].frame)));
+  live.sendWhilePresenting("mousemove --window " + std::to_string(markX) + " " + std::to_string(trackRow + 4));
+  const RgbaImage hovered = live.shot("scrubber-cut-mark-hover");
+  // Around the pointer (the HUD's live graphs, top left, change from shot to shot; the paused
+  // transport does not).
+  int changed = 0;
+  for (int y = std::max(0, trackRow - 80); y < kHeight; ++y)
+    for (int x = std::max(0, markX - 20); x < std::min(kWidth, markX + 320); ++x) {
+      const uint8_t *a = shot.at(x, y), *b = hovered.at(x, y);
+      changed += std::abs(a[0] - b[0]) + std::abs(a[1] - b[1]) + std::abs(a[2] - b[2]) > 48;
+    }
+  INFO(changed << " pixels changed round the pointer on the mark");
+  CHECK(changed > 300);
 }
