@@ -17,6 +17,8 @@
 layout(set = 0, binding = 0) uniform sampler2DArray artwork;
 layout(location = 0) in vec2 uv[MAX_ACTIVE];
 layout(location = MAX_ACTIVE) in float seam;
+layout(location = MAX_ACTIVE + 1) in vec3 ink;        // distance to an opened cut's side, width (target px), alpha
+layout(location = MAX_ACTIVE + 2) in vec3 inkColour;  // straight RGB
 layout(location = 0) out vec4 color;  // premultiplied; blended ONE, ONE_MINUS_SRC_ALPHA
 
 void main() {
@@ -29,5 +31,10 @@ void main() {
     opaquest = max(opaquest, texel.a);
   }
   if (seam > 0.0 && sum.a > 0.0) sum *= mix(sum.a, opaquest, seam) / sum.a;
+  // An opened cut's edge drawn with the drawing's outline ink: a band of the line's width along the
+  // side (distance interpolated across the triangles that touch it, exact on a straight side),
+  // antialiased over a pixel, over the artwork where the shape is.
+  float cover = ink.z * clamp(ink.y - ink.x + 0.5, 0.0, 1.0);
+  sum = mix(sum, vec4(inkColour * sum.a, sum.a), cover);
   color = sum * draw.tint;
 }

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <numeric>
+#include <set>
 #include <vector>
 
 namespace ib::render {
@@ -91,6 +94,124 @@ Eigen::Vector2d inwardNormal(const RgbaImage& drawing, const Eigen::Vector2d& at
       sum += Eigen::Vector2d(alpha(x + 1, y) - alpha(x - 1, y), alpha(x, y + 1) - alpha(x, y - 1));
     }
   return sum.norm() > 1e-9 ? Eigen::Vector2d(sum.normalized()) : Eigen::Vector2d(0, 0);
+}
+
+CutInks cutInksOf(const Multimesh& mesh, const std::vector<RgbaImage>& drawings) {
+  CutInks out;
+  const int n = mesh.vertexCount(), m = mesh.keyCount();
+  // Distinct pairs and the keys that close each.
+  std::map<std::array<int, 4>, std::vector<char>> closing;
+  for (int k = 0; k < m; ++k)
+    for (const CohesivePair& p : mesh.cohesivePairs(k)) {
+      auto& keys = closing[{p.a, p.b, p.c, p.d}];
+      keys.resize(m, 0);
+      keys[k] = 1;
+    }
+  std::vector<std::array<int, 4>> pairs;
+  std::vector<std::vector<char>> closedIn;
+  for (const auto& [pair, keys] : closing) pairs.push_back(pair), closedIn.push_back(keys);
+  // Chains by union-find over shared vertices, among pairs closed in the same keys.
+  std::vector<int> parent(pairs.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  const auto root = [&](int p) {
+    while (parent[p] != p) p = parent[p] = parent[parent[p]];
+    return p;
+  };
+  std::map<int, int> firstAt;
+  for (size_t p = 0; p < pairs.size(); ++p)
+    for (int v : pairs[p]) {
+      const auto [it, fresh] = firstAt.emplace(v, static_cast<int>(p));
+      if (!fresh && closedIn[it->second] == closedIn[p]) parent[root(static_cast<int>(p))] = root(it->second);
+    }
+  std::map<int, int> cutOfRoot;
+  std::vector<int> cutOfPair(pairs.size());
+  for (size_t p = 0; p < pairs.size(); ++p) {
+    const auto [it, fresh] = cutOfRoot.emplace(root(static_cast<int>(p)), static_cast<int>(cutOfRoot.size()));
+    cutOfPair[p] = it->second;
+    if (fresh) out.cuts.push_back({OutlineInk{}, closedIn[p]});
+  }
+  // The chains' ends: pair vertices used by one pair only (a chain's middle vertices are shared
+  // by two), on the mesh boundary in a key that closes the cut.
+  std::vector<int> uses(static_cast<size_t>(n), 0);
+  for (const auto& pair : pairs)
+    for (int v : std::set<int>(pair.begin(), pair.end())) ++uses[v];
+  std::vector<char> boundary(static_cast<size_t>(n), 0);
+  for (const Edge& e : mesh.boundaryEdges()) boundary[e[0]] = boundary[e[1]] = 1;
+  std::vector<std::vector<OutlineInk>> read(out.cuts.size());
+  for (size_t p = 0; p < pairs.size(); ++p)
+    for (int v : std::set<int>(pairs[p].begin(), pairs[p].end())) {
+      if (uses[v] != 1 || !boundary[v]) continue;
+      for (int k = 0; k < m; ++k) {
+        if (!closedIn[p][k] || k >= static_cast<int>(drawings.size())) continue;
+        const Eigen::Vector2d at = mesh.keyPositions(k).row(v).transpose();
+        const Eigen::Vector2d inward = inwardNormal(drawings[k], at);
+        if (inward.norm() < 0.5) continue;
+        const OutlineInk ink = outlineInk(drawings[k], at, inward);
+        if (ink.found) read[cutOfPair[p]].push_back(ink);
+      }
+    }
+  for (size_t c = 0; c < out.cuts.size(); ++c) {
+    std::vector<OutlineInk>& found = read[c];
+    if (found.empty()) continue;
+    std::sort(found.begin(), found.end(), [](const OutlineInk& a, const OutlineInk& b) { return a.width < b.width; });
+    out.cuts[c].ink = found[found.size() / 2];  // the median width, with its colour
+  }
+  // Sides and the vertices near them.
+  out.near.assign(static_cast<size_t>(n), {});
+  std::vector<std::set<int>> sidesAt(static_cast<size_t>(n));
+  for (size_t p = 0; p < pairs.size(); ++p) {
+    if (!out.cuts[cutOfPair[p]].ink.found) continue;
+    for (const Edge& e : {Edge{pairs[p][0], pairs[p][1]}, Edge{pairs[p][2], pairs[p][3]}}) {
+      if (e[0] == e[1]) continue;
+      const int side = static_cast<int>(out.sides.size());
+      out.sides.push_back(e);
+      out.sideCut.push_back(cutOfPair[p]);
+      sidesAt[e[0]].insert(side);
+      sidesAt[e[1]].insert(side);
+    }
+  }
+  for (const Triangle& t : mesh.triangles()) {
+    std::set<int> nearby;
+    for (int v : t) nearby.insert(sidesAt[v].begin(), sidesAt[v].end());
+    for (int v : t)
+      for (int side : nearby)
+        if (std::find(out.near[v].begin(), out.near[v].end(), side) == out.near[v].end()) out.near[v].push_back(side);
+  }
+  return out;
+}
+
+InkFrame inkFrame(const CutInks& inks, const Eigen::MatrixX2d& x, const std::vector<float>& closure,
+                  const Eigen::VectorXd& weights, double pixelsPerUnit) {
+  const size_t n = static_cast<size_t>(x.rows());
+  InkFrame out;
+  out.distance.assign(n, 1e6f);
+  out.alpha.assign(n, 0.0f);
+  out.width.assign(n, 0.0f);
+  out.colour.assign(n, {0, 0, 0});
+  std::vector<double> open(inks.cuts.size(), 0.0);  // o per cut
+  for (size_t c = 0; c < inks.cuts.size(); ++c)
+    for (Eigen::Index k = 0; k < weights.size(); ++k)
+      if (k >= static_cast<Eigen::Index>(inks.cuts[c].closedIn.size()) || !inks.cuts[c].closedIn[k]) open[c] += weights(k);
+  for (size_t v = 0; v < n && v < inks.near.size(); ++v) {
+    double best = INFINITY;
+    int side = -1;
+    const Eigen::Vector2d p = x.row(static_cast<Eigen::Index>(v)).transpose();
+    for (int s : inks.near[v]) {
+      const Eigen::Vector2d a = x.row(inks.sides[s][0]).transpose(), b = x.row(inks.sides[s][1]).transpose();
+      const Eigen::Vector2d d = b - a;
+      const double t = std::clamp((p - a).dot(d) / std::max(d.squaredNorm(), 1e-300), 0.0, 1.0);
+      const double distance = (a + t * d - p).norm();
+      if (distance < best) best = distance, side = s;
+    }
+    if (side < 0) continue;
+    const CutInks::Cut& cut = inks.cuts[inks.sideCut[side]];
+    const float shut = std::max(closure[inks.sides[side][0]], closure[inks.sides[side][1]]);
+    out.distance[v] = static_cast<float>(best * pixelsPerUnit);
+    out.alpha[v] = static_cast<float>((1.0 - shut) * std::clamp(1.0 - open[inks.sideCut[side]], 0.0, 1.0));
+    out.width[v] = static_cast<float>(cut.ink.width * pixelsPerUnit);
+    out.colour[v] = {cut.ink.colour[0], cut.ink.colour[1], cut.ink.colour[2]};
+  }
+  return out;
 }
 
 }  // namespace ib::render

@@ -4,9 +4,11 @@
 #pragma once
 
 #include "core/png_image.h"
+#include "multimesh/multimesh.h"
 
 #include <Eigen/Core>
 #include <array>
+#include <vector>
 
 namespace ib::render {
 
@@ -28,5 +30,38 @@ OutlineInk outlineInk(const RgbaImage& drawing, const Eigen::Vector2d& at, const
 // over the pixels within `radius` px (so a 1 px antialiased edge and a blurry one alike give the
 // outline's normal). Zero where the alpha is flat.
 Eigen::Vector2d inwardNormal(const RgbaImage& drawing, const Eigen::Vector2d& at, double radius = 3);
+
+// Every cut's ink and where it is drawn, fixed for a multimesh and its drawings: a cut is a chain of
+// cohesive pairs end to end closed in the same keys; its ink is the median of the outline's read
+// at the chain's two ends (the pair vertices that are also on the outline: boundary vertices of
+// the key) in every key that closes it. Its sides are the pairs' edges {a, b} and {c, d}.
+struct CutInks {
+  struct Cut {
+    OutlineInk ink;              // found = false: the drawings have no line there; not drawn
+    std::vector<char> closedIn;  // [key]: the key closes the cut
+  };
+  std::vector<Cut> cuts;
+  std::vector<Edge> sides;     // side edges {a, b}
+  std::vector<int> sideCut;    // [side]: its cut
+  // Vertices that may lie within a line's width of a side: the sides' vertices and the vertices
+  // that share a triangle with them. near[v] lists the sides to measure v against ([] elsewhere).
+  std::vector<std::vector<int>> near;
+};
+
+// drawings: [key], the keys' drawings as read (before silhouetteArtwork), in the multimesh's
+// pixels.
+CutInks cutInksOf(const Multimesh& mesh, const std::vector<RgbaImage>& drawings);
+
+// One frame's ink per vertex, for the artwork shader: its distance to the nearest side (target
+// pixels, large away from cuts), the ink's colour (straight RGB) and width (target pixels), and
+// how much of it to draw, alpha = (1 - closure) (1 - o): nothing where the cut is shut, and less
+// as the keys that open it, which draw their own line there, take the weight o.
+struct InkFrame {
+  std::vector<float> distance, alpha, width;
+  std::vector<std::array<float, 3>> colour;
+};
+// x: n x 2 positions (drawing pixels); closure: weldCuts' per vertex; weights: m.
+InkFrame inkFrame(const CutInks& inks, const Eigen::MatrixX2d& x, const std::vector<float>& closure,
+                  const Eigen::VectorXd& weights, double pixelsPerUnit);
 
 }  // namespace ib::render

@@ -5,6 +5,7 @@
 
 #include "core/png_image.h"
 #include "multimesh/multimesh.h"
+#include "output/cut_ink.h"
 #include "output/silhouette_artwork.h"
 
 #include <Eigen/Core>
@@ -36,6 +37,7 @@ struct RenderMesh {
   std::vector<Edge> edges;                       // every mesh edge once (wireframe)
   std::vector<std::vector<Edge>> cohesiveEdges;  // [key]: both edges of each of C_i's pairs
   CutSides cutSides;                             // every key's cohesive pairs, for weldCuts
+  CutInks inks;                                  // the drawings' outline ink, drawn where cuts open
   std::vector<int> features;                     // vertices marked as features
 };
 

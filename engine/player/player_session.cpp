@@ -44,6 +44,7 @@ void PlayerSession::rebuild(bool keepParameters) {
   previousMesh_ = std::move(renderMesh_);
   renderMesh_ = std::make_unique<render::RenderMesh>(
       render::renderMeshOf(*played, loaded.drawings, initialMap_ ? featureVertices(loaded.scene, *played) : loaded.features));
+  if (!loaded.scene.cutInk) renderMesh_->inks = {};
   parameters_ = std::make_unique<LiveParameters>(loaded.scene);
   for (const auto& [name, value] : tuned) {
     try {

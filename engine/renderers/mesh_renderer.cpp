@@ -57,6 +57,7 @@ MeshRenderer::MeshRenderer(const vk::VulkanContext& context, VkCommandPool pool,
       edges_(mesh.edges),
       cohesiveEdges_(mesh.cohesiveEdges),
       cutSides_(mesh.cutSides),
+      inks_(mesh.inks),
       features_(mesh.features) {
   if (keyCount_ == 0 || vertexCount_ == 0 || mesh.triangles.empty()) throw std::invalid_argument("render: the mesh is empty");
   VkDevice device = context.device();
@@ -147,11 +148,17 @@ void MeshRenderer::drawArtwork(VkCommandBuffer cmd, const float view[4], double 
   const Active active = activeKeys(weights);
   if (active.count == 0) return;  // nothing has weight: nothing to draw
   const CutWeld weld = weldCuts(x, cutSides_, pixelsPerUnit, {}, heldPairs);
-  auto* out = reinterpret_cast<float*>(static_cast<char*>(streams_[slot].mapped) + offset);
+  const InkFrame ink = inkFrame(inks_, x, weld.closure, weights, pixelsPerUnit);
+  auto* out = reinterpret_cast<vk::ArtworkVertex*>(static_cast<char*>(streams_[slot].mapped) + offset);
   for (int v = 0; v < vertexCount_; ++v) {
-    out[kArtworkFloats * v] = static_cast<float>(weld.positions(v, 0));
-    out[kArtworkFloats * v + 1] = static_cast<float>(weld.positions(v, 1));
-    out[kArtworkFloats * v + 2] = weld.closure[v];
+    vk::ArtworkVertex& o = out[v];
+    o.position[0] = static_cast<float>(weld.positions(v, 0));
+    o.position[1] = static_cast<float>(weld.positions(v, 1));
+    o.seamClosure = weld.closure[v];
+    o.inkDistance = ink.distance[v];
+    o.inkWidth = ink.width[v];
+    o.inkAlpha = ink.alpha[v];
+    for (int c = 0; c < 3; ++c) o.inkColour[c] = ink.colour[v][c];
   }
   vk::ArtworkPush push{};
   std::copy(view, view + 4, push.view);

@@ -53,6 +53,7 @@ class MeshRenderer {
   std::vector<Edge> edges_;                      // overlay geometry, copied from the RenderMesh
   std::vector<std::vector<Edge>> cohesiveEdges_;
   CutSides cutSides_;                                  // welded in every frame (weldCuts)
+  CutInks inks_;                                       // the outline ink drawn where cuts open (inkFrame)
   std::vector<int> features_;
   VkDeviceSize overlayCapacity_ = 0;             // overlay vertices a stream buffer holds
   vk::RendererPipelines pipelines_;

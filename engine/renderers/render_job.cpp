@@ -57,7 +57,8 @@ RenderJobReport renderFrames(const vk::VulkanContext& context, const Scene& scen
     canvasW = std::max(canvasW, d.width);
     canvasH = std::max(canvasH, d.height);
   }
-  const RenderMesh renderMesh = renderMeshOf(mesh, std::move(drawings), features);
+  RenderMesh renderMesh = renderMeshOf(mesh, std::move(drawings), features);
+  if (!scene.cutInk) renderMesh.inks = {};
   OffscreenRenderer renderer = makeRenderer(context, renderMesh, options.target);
   const int width = options.target.width, height = options.target.height;
   const ViewBox view = fitView({0, 0, double(canvasW), double(canvasH)}, width, height, 0);

@@ -149,7 +149,9 @@ RendererPipelines createRendererPipelines(VkDevice device, VkRenderPass pass, Vk
   out.overlayLayout = createLayout(device, nullptr, 4 * sizeof(float), VK_SHADER_STAGE_VERTEX_BIT);
   const std::vector<VkVertexInputAttributeDescription> artworkInput = {
       {0, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(ArtworkVertex, position)},
-      {1, 0, VK_FORMAT_R32_SFLOAT, offsetof(ArtworkVertex, seamClosure)}};
+      {1, 0, VK_FORMAT_R32_SFLOAT, offsetof(ArtworkVertex, seamClosure)},
+      {2, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(ArtworkVertex, inkDistance)},
+      {3, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(ArtworkVertex, inkColour)}};
   const PipelineSpec artwork[3] = {
       {artwork2_vert, sizeof(artwork2_vert), artwork2_frag, sizeof(artwork2_frag), "artwork (2 keys)",
        VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST, artworkInput, sizeof(ArtworkVertex)},

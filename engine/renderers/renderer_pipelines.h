@@ -28,6 +28,10 @@ static_assert(sizeof(ArtworkPush) == 104, "ArtworkPush must match shaders/artwor
 struct ArtworkVertex {
   float position[2];  // drawing pixels
   float seamClosure;  // 0..1, see render::weldCuts
+  // The outline ink drawn along an opened cut (render::inkFrame): distance to the cut's side and
+  // the line's width (target pixels), how much of it (0..1), its colour (straight RGB).
+  float inkDistance, inkWidth, inkAlpha;
+  float inkColour[3];
 };
 
 struct OverlayVertex {

@@ -228,6 +228,11 @@ std::vector<ParameterSpec> makeTable() {
           .access([](const Scene& s) { return double(s.sampling); },
                   [](Scene& s, double v) { s.sampling = static_cast<ArtworkSampling>(v); }));
 
+  add(Row("cut_ink", "cut_ink").toggle(scene.cutInk)
+          .meaning("render and play draw the edges a cut opens with the drawings' outline ink, where they have one")
+          .invalidates(I::kNothing)
+          .access([](const Scene& s) { return s.cutInk ? 1.0 : 0.0; }, [](Scene& s, double v) { s.cutInk = v != 0; }));
+
   // The player's own: no scene field holds them.
   add(Row("kappa_scale", "").number(1, 1e-3, 1e3).log()
           .meaning("multiplies every triangle's stiffness against the cohesive pull; Save writes it into every "
