@@ -17,7 +17,6 @@ Eigen::Matrix2d edges(const Eigen::MatrixX2d& x, const Triangle& t) {
   return d;
 }
 
-
 // gamma of a pull's key: how firmly its rotation keeps to the anchor, kappa o^2 (|U|^2 + |V|^2),
 // a hundredth of the pull's own term once the gap is open (docs/solver.md, "Cut timing": 0.1
 // left growing-flower's and chinese-character's solves at the iteration cap on 19 frames).
@@ -88,6 +87,7 @@ GapPull::GapPull(const Multimesh& mesh, const std::vector<Eigen::MatrixX2d>& key
     pulls_[p].chain = it->second;
   }
   chains_ = static_cast<int>(chainOfRoot.size());
+  for (const Pull& pull : pulls_) slots_ = std::max(slots_, pull.key.size());
 }
 
 double GapPull::share(const Pull& pull, const Eigen::VectorXd& w) const {
@@ -122,12 +122,8 @@ void GapPull::freezeRotations(const Eigen::MatrixX2d& x) {
   }
 }
 
-std::vector<Eigen::Matrix2d> GapPull::rotations(const Eigen::MatrixX2d& x, const Eigen::VectorXd& w, const GroupAngles& turn) const {
-  // Per chain and open key (in the order of its pulls' key lists): the rotation minimizing the
-  // chain's pulls, the closest to sum_p k_p [o ((u + v/2) U^T + (v + u/2) V^T) + gamma_p B_p].
-  size_t width = 0;
-  for (const Pull& pull : pulls_) width = std::max(width, pull.key.size());
-  std::vector<Eigen::Matrix2d> S(static_cast<size_t>(chains_) * width, Eigen::Matrix2d::Zero());
+template <class Visit>
+void GapPull::forEachTerm(const Eigen::MatrixX2d& x, const Eigen::VectorXd& w, Visit&& visit) const {
   for (const Pull& pull : pulls_) {
     const double pullShare = share(pull, w);
     if (pullShare <= 0) continue;
@@ -136,13 +132,22 @@ std::vector<Eigen::Matrix2d> GapPull::rotations(const Eigen::MatrixX2d& x, const
     const Eigen::Vector2d v = (x.row(p.b) - x.row(p.d)).transpose();
     double open = 0;
     for (int k : pull.key) open += w(k);
+    const double scale = pull.restLength / 3.0 * params_.lambda;
     for (size_t i = 0; i < pull.key.size(); ++i) {
-      const double k = pullShare * w(pull.key[i]) * pull.restLength;
-      if (k <= 0) continue;
-      S[pull.chain * width + i] += k * (open * ((u + 0.5 * v) * pull.U[i].transpose() + (v + 0.5 * u) * pull.V[i].transpose()) +
-                                        anchorOf(open, pull.U[i], pull.V[i]) * turn.of(pull.pair.a) * pull.R[i]);
+      const double k = pullShare * w(pull.key[i]) * scale;
+      if (k > 0) visit(pull, i, u, v, open, k);
     }
   }
+}
+
+std::vector<Eigen::Matrix2d> GapPull::rotations(const Eigen::MatrixX2d& x, const Eigen::VectorXd& w, const GroupAngles& turn) const {
+  // Per chain and open key (in the order of its pulls' key lists): the rotation minimizing the
+  // chain's pulls, the closest to sum_p k_p [o ((u + v/2) U^T + (v + u/2) V^T) + gamma_p B_p].
+  std::vector<Eigen::Matrix2d> S(static_cast<size_t>(chains_) * slots_, Eigen::Matrix2d::Zero());
+  forEachTerm(x, w, [&](const Pull& pull, size_t i, const Eigen::Vector2d& u, const Eigen::Vector2d& v, double open, double k) {
+    S[pull.chain * slots_ + i] += k * (open * ((u + 0.5 * v) * pull.U[i].transpose() + (v + 0.5 * u) * pull.V[i].transpose()) +
+                                       anchorOf(open, pull.U[i], pull.V[i]) * turn.of(pull.pair.a) * pull.R[i]);
+  });
   for (Eigen::Matrix2d& m : S) m = m.isZero(0) ? Eigen::Matrix2d::Identity() : closestRotation(m);
   return S;
 }
@@ -158,37 +163,24 @@ Eigen::Matrix2d GroupAngles::of(int v) const {
 double GapPull::evaluate(const Eigen::MatrixX2d& x, const Eigen::VectorXd& w, Eigen::MatrixX2d& gradient,
                          const GroupAngles& angles, std::vector<double>* angleGradient) const {
   const std::vector<Eigen::Matrix2d> turn = rotations(x, w, angles);
-  size_t width = 0;
-  for (const Pull& pull : pulls_) width = std::max(width, pull.key.size());
   double energy = 0;
-  for (const Pull& pull : pulls_) {
-    const double pullShare = share(pull, w);
-    if (pullShare <= 0) continue;
+  forEachTerm(x, w, [&](const Pull& pull, size_t i, const Eigen::Vector2d& u, const Eigen::Vector2d& v, double open, double k) {
     const CohesivePair& p = pull.pair;
-    const Eigen::Vector2d u = (x.row(p.a) - x.row(p.c)).transpose();
-    const Eigen::Vector2d v = (x.row(p.b) - x.row(p.d)).transpose();
-    const double scale = pull.restLength / 3.0 * params_.lambda;
-    double open = 0;
-    for (int k : pull.key) open += w(k);
-    for (size_t i = 0; i < pull.key.size(); ++i) {
-      const double weight = pullShare * w(pull.key[i]);
-      if (weight <= 0) continue;
-      const double gamma = anchorOf(open, pull.U[i], pull.V[i]);
-      const Eigen::Matrix2d& R = turn[pull.chain * width + i];
-      const Eigen::Vector2d du = u - open * R * pull.U[i], dv = v - open * R * pull.V[i];
-      const Eigen::Matrix2d B = angles.of(p.a) * pull.R[i];
-      energy += weight * scale * (du.squaredNorm() + du.dot(dv) + dv.squaredNorm() + gamma * (R - B).squaredNorm());
-      // gamma |R - Rot(theta) B|^2 = gamma (4 - 4 cos(phi_R - theta - beta)): d/d theta = 4 gamma (R^T B)(1, 0).
-      if (angleGradient && !angleGradient->empty())
-        (*angleGradient)[static_cast<size_t>(angles.groups->groupOf(p.a))] += weight * scale * gamma * 4 * (R.transpose() * B)(1, 0);
-      // R minimizes the chain's energy, so the gradient is the one at fixed R.
-      const Eigen::Vector2d gu = weight * scale * (2.0 * du + dv), gv = weight * scale * (du + 2.0 * dv);
-      gradient.row(p.a) += gu.transpose();
-      gradient.row(p.c) -= gu.transpose();
-      gradient.row(p.b) += gv.transpose();
-      gradient.row(p.d) -= gv.transpose();
-    }
-  }
+    const double gamma = anchorOf(open, pull.U[i], pull.V[i]);
+    const Eigen::Matrix2d& R = turn[pull.chain * slots_ + i];
+    const Eigen::Vector2d du = u - open * R * pull.U[i], dv = v - open * R * pull.V[i];
+    const Eigen::Matrix2d B = angles.of(p.a) * pull.R[i];
+    energy += k * (du.squaredNorm() + du.dot(dv) + dv.squaredNorm() + gamma * (R - B).squaredNorm());
+    // gamma |R - Rot(theta) B|^2 = gamma (4 - 4 cos(phi_R - theta - beta)): d/d theta = 4 gamma (R^T B)(1, 0).
+    if (angleGradient && !angleGradient->empty())
+      (*angleGradient)[static_cast<size_t>(angles.groups->groupOf(p.a))] += k * gamma * 4 * (R.transpose() * B)(1, 0);
+    // R minimizes the chain's energy, so the gradient is the one at fixed R.
+    const Eigen::Vector2d gu = k * (2.0 * du + dv), gv = k * (du + 2.0 * dv);
+    gradient.row(p.a) += gu.transpose();
+    gradient.row(p.c) -= gu.transpose();
+    gradient.row(p.b) += gv.transpose();
+    gradient.row(p.d) -= gv.transpose();
+  });
   return energy;
 }
 

@@ -88,8 +88,14 @@ class GapPull {
   // Per chain and open key, the chain's minimizing rotation at x (chain * width + key slot).
   std::vector<Eigen::Matrix2d> rotations(const Eigen::MatrixX2d& x, const Eigen::VectorXd& w, const GroupAngles& turn) const;
 
+  // Calls visit(pull, slot, u, v, o, k) for every pull with a share at w and every open key slot
+  // whose weight k = w_j share l/3 lambda is > 0 (u, v: the pair's gaps at x; o: open keys' weight).
+  template <class Visit>
+  void forEachTerm(const Eigen::MatrixX2d& x, const Eigen::VectorXd& w, Visit&& visit) const;
+
   std::vector<Pull> pulls_;
   int chains_ = 0;
+  size_t slots_ = 0;  // the most open keys of any pull: rotations() holds chains_ x slots_
 };
 
 }  // namespace ib
