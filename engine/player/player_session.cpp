@@ -67,15 +67,19 @@ void PlayerSession::rebuild(bool keepParameters) {
     weights_[0] = 1;
   }
   worker_.reset();  // its thread stops before the new one starts: the cores are the new one's
-  const SceneFrameSetup setup = sceneFrameSetup(parameters_->scene(loaded.scene), *played, parameters_->frameOptions());
+  const Scene live = parameters_->scene(loaded.scene);
+  const SceneFrameSetup setup = sceneFrameSetup(live, *played, parameters_->frameOptions());
   worker_ = std::make_unique<SolveWorker>(played, setup.timeline, setup.interpolation, setup.dynamics, setup.stiffness, options_);
   sentGeneration_ = parameters_->generation();
+  cutEvents_ = ib::cutEvents(live);
   requestedFrame_ = -1;
   if (weightsMode_) worker_->showWeights(weights_);
 }
 
 void PlayerSession::sendParameters() {
-  const SceneFrameSetup setup = sceneFrameSetup(parameters_->scene(scene().scene), playedMesh(), parameters_->frameOptions());
+  const Scene tuned = parameters_->scene(scene().scene);
+  const SceneFrameSetup setup = sceneFrameSetup(tuned, playedMesh(), parameters_->frameOptions());
+  cutEvents_ = ib::cutEvents(tuned);
   worker_->setParameters(setup.interpolation, setup.dynamics, setup.stiffness);
   sentGeneration_ = parameters_->generation();
   requestedFrame_ = -1;  // re-solve what is shown

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "output/render_mesh.h"
+#include "pipeline/cut_timing.h"
 #include "playback/live_parameters.h"
 #include "playback/scene_reloader.h"
 #include "playback/solve_worker.h"
@@ -28,6 +29,8 @@ class PlayerSession {
   bool update(double seconds);
 
   const LoadedScene& scene() const { return reloader_->current(); }
+  // Where each cut lets go and glues on the timeline, with the live parameters (the scrubber's marks).
+  const std::vector<CutEvent>& cutEvents() const { return cutEvents_; }
   const std::string& scenePath() const { return reloader_->path(); }
   SceneReloader& reloader() { return *reloader_; }
   const render::RenderMesh& renderMesh() const { return *renderMesh_; }
@@ -75,6 +78,7 @@ class PlayerSession {
   std::unique_ptr<Transport> transport_;
   std::unique_ptr<SolveWorker> worker_;
   int sentGeneration_ = -1;
+  std::vector<CutEvent> cutEvents_;  // of the scene with the live parameters, as last sent
   bool weightsMode_ = false;
   Eigen::VectorXd weights_;
   bool initialMap_ = false, initialMapChanged_ = false;

@@ -2,8 +2,6 @@
 // and time readout, the in / out range, and the scrubber with the timeline's marks at their times.
 #include "player/player_ui.h"
 
-#include "pipeline/cut_timing.h"
-
 #include <imgui.h>
 
 #include <algorithm>
@@ -65,7 +63,7 @@ void scrubber(PlayerSession& session) {
     const float textX = x + r + 2 + textWidth > origin.x + width ? x - r - 2 - textWidth : x + r + 2;
     draw->AddText(ImVec2(textX, origin.y), key ? kKeyMark : kBreakdown, mark.label.c_str());
   }
-  for (const CutEvent& event : cutEvents(session.parameters().scene(session.scene().scene))) {
+  for (const CutEvent& event : session.cutEvents()) {
     if (event.frame > frames - 1) continue;
     const float x = xOf(event.frame), y = bottom - 6;
     const ImU32 colour = event.glue ? kGlue : kRelease;
