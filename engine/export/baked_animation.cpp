@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace ib::gltf {
 
@@ -21,7 +22,9 @@ BakedAnimation bakeAnimation(FrameStream& stream, const render::CutSides& cutSid
     if (frame.index >= range[0]) {
       baked.frames.push_back(frame.index);
       baked.times.push_back((frame.index - range[0]) / baked.fps);
-      baked.positions.push_back(render::weldCuts(frame.x, cutSides, 1.0, {}, &frame.heldPairs).positions);
+      render::CutWeld weld = render::weldCuts(frame.x, cutSides, 1.0, {}, &frame.heldPairs);
+      baked.positions.push_back(std::move(weld.positions));
+      baked.closure.push_back(std::move(weld.closure));
       baked.weights.push_back(std::move(frame.weights));
     }
     if (progress) progress(frame.index + 1, total);

@@ -18,6 +18,8 @@ struct BakedAnimation {
   std::vector<double> times;                 // s, from the first baked frame (frame f at (f - first) / fps)
   std::vector<Eigen::MatrixX2d> positions;   // [frame]: n x 2, welded, drawing pixels (y down)
   std::vector<Eigen::VectorXd> weights;      // [frame]: m x 1, the interpolation weights w(s)
+  std::vector<std::vector<float>> closure;   // [frame]: n, how shut each vertex's cut is (weldCuts;
+                                             // empty: no ink drawn on opened cuts)
   double fps = 24;                           // frames per second
   bool loops = false;                        // the whole looping timeline: the clip returns to its first frame
   double shapeSize = 1;                      // s = sqrt(mean key area), drawing pixels

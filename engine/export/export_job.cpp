@@ -31,7 +31,8 @@ GltfExportReport exportAnimation(const Scene& scene, const Multimesh& mesh, std:
     exported.canvas[0] = std::max(exported.canvas[0], d.width);
     exported.canvas[1] = std::max(exported.canvas[1], d.height);
   }
-  const render::RenderMesh renderMesh = render::renderMeshOf(mesh, std::move(drawings));
+  render::RenderMesh renderMesh = render::renderMeshOf(mesh, std::move(drawings));
+  if (!scene.cutInk) renderMesh.inks = {};
   FrameStream stream = sceneFrameStream(scene, mesh, options.solving);
   const BakedAnimation baked = bakeAnimation(stream, renderMesh.cutSides, options.frames, [&](int done, int total) {
     if (progress)

@@ -1,6 +1,8 @@
 #include "export/gltf_document.h"
 
 #include "export/artwork_bleed.h"
+#include "export/gltf_writer.h"
+#include "export/ink_node.h"
 
 #include <nlohmann/json.hpp>
 
@@ -26,82 +28,6 @@ DocumentInput withValidNames(const DocumentInput& input) {
   in.name = validUtf8(in.name);
   for (std::string& key : in.keyNames) key = validUtf8(key);
   return in;
-}
-
-constexpr int kArrayBuffer = 34962;
-constexpr int kElementArrayBuffer = 34963;
-
-// Appends bufferViews (4-byte aligned, one per accessor) and accessors to a document.
-class Writer {
- public:
-  explicit Writer(GltfDocument& doc) : doc_(doc) {}
-
-  int view(const void* data, size_t bytes, ViewCodec codec, int target, int byteStride = 0) {
-    while (doc_.bin.size() % 4) doc_.bin.push_back(0);
-    tinygltf::BufferView v;
-    v.buffer = 0;
-    v.byteOffset = doc_.bin.size();
-    v.byteLength = bytes;
-    v.byteStride = static_cast<size_t>(byteStride);
-    v.target = target;
-    const auto* p = static_cast<const unsigned char*>(data);
-    doc_.bin.insert(doc_.bin.end(), p, p + bytes);
-    doc_.model.bufferViews.push_back(v);
-    doc_.views.push_back(codec);
-    return static_cast<int>(doc_.model.bufferViews.size()) - 1;
-  }
-
-  // An accessor of `count` elements of `components` each over its own bufferView; min/max from
-  // the stored values, as the validator compares them.
-  template <typename T>
-  int accessor(const std::vector<T>& values, int components, int count, int componentType, int type, bool normalized,
-               int target, bool minMax, int stride = 0) {
-    const int elementBytes = stride > 0 ? stride : components * static_cast<int>(sizeof(T));
-    const int perElement = elementBytes / static_cast<int>(sizeof(T));
-    ViewCodec codec;
-    codec.kind = target == kElementArrayBuffer ? ViewCodec::Kind::kTriangles : ViewCodec::Kind::kAttributes;
-    codec.stride = elementBytes;
-    codec.count = count;
-    if (codec.kind == ViewCodec::Kind::kAttributes && elementBytes % 4) codec.kind = ViewCodec::Kind::kNone;
-    tinygltf::Accessor a;
-    a.bufferView = view(values.data(), values.size() * sizeof(T), codec, target, stride);
-    a.byteOffset = 0;
-    a.componentType = componentType;
-    a.count = static_cast<size_t>(count);
-    a.type = type;
-    a.normalized = normalized;
-    if (minMax) {
-      a.minValues.assign(components, std::numeric_limits<double>::infinity());
-      a.maxValues.assign(components, -std::numeric_limits<double>::infinity());
-      for (int e = 0; e < count; ++e)
-        for (int c = 0; c < components; ++c) {
-          const double v = static_cast<double>(values[static_cast<size_t>(e) * perElement + c]);
-          a.minValues[c] = std::min(a.minValues[c], v);
-          a.maxValues[c] = std::max(a.maxValues[c], v);
-        }
-    }
-    doc_.model.accessors.push_back(a);
-    return static_cast<int>(doc_.model.accessors.size()) - 1;
-  }
-
- private:
-  GltfDocument& doc_;
-};
-
-int indicesAccessor(Writer& writer, const render::RenderMesh& mesh) {
-  const int count = 3 * static_cast<int>(mesh.triangles.size());
-  if (mesh.vertexCount <= 65535) {
-    std::vector<uint16_t> indices;
-    for (const Triangle& t : mesh.triangles)
-      for (int c = 0; c < 3; ++c) indices.push_back(static_cast<uint16_t>(t[c]));
-    return writer.accessor(indices, 1, count, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, TINYGLTF_TYPE_SCALAR, false,
-                           kElementArrayBuffer, false);
-  }
-  std::vector<uint32_t> indices;
-  for (const Triangle& t : mesh.triangles)
-    for (int c = 0; c < 3; ++c) indices.push_back(static_cast<uint32_t>(t[c]));
-  return writer.accessor(indices, 1, count, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR, false,
-                         kElementArrayBuffer, false);
 }
 
 int uvAccessor(Writer& writer, const Eigen::MatrixX2f& uv, bool quantized) {
@@ -158,15 +84,9 @@ void addTextures(GltfDocument& doc, Writer& writer, const DocumentInput& in, con
 void addMaterials(GltfDocument& doc, const DocumentInput& in, const std::vector<int>& layers,
                   const std::vector<double>& firstAlphas) {
   for (size_t l = 0; l < layers.size(); ++l) {
-    tinygltf::Material material;
-    material.name = in.keyNames[layers[l]];
+    tinygltf::Material material = unlitMaterial(in.keyNames[layers[l]]);
     material.pbrMetallicRoughness.baseColorTexture.index = static_cast<int>(l);
     material.pbrMetallicRoughness.baseColorFactor = {1, 1, 1, firstAlphas[layers[l]]};
-    material.pbrMetallicRoughness.metallicFactor = 0;
-    material.pbrMetallicRoughness.roughnessFactor = 1;
-    material.alphaMode = "BLEND";
-    material.doubleSided = true;
-    material.extensions["KHR_materials_unlit"] = tinygltf::Value(tinygltf::Value::Object());
     doc.model.materials.push_back(material);
   }
 }
@@ -218,7 +138,7 @@ GltfDocument buildDocument(const DocumentInput& input) {
   extras["inbetween"] = tinygltf::Value(info);
   model.asset.extras = tinygltf::Value(extras);
 
-  const int indices = indicesAccessor(writer, mesh);
+  const int indices = indicesAccessor(writer, mesh.triangles, n);
   const int base = writer.accessor(codec.base(), 3, n, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, false,
                                    kArrayBuffer, true);
   std::vector<int> targets;
@@ -266,9 +186,11 @@ GltfDocument buildDocument(const DocumentInput& input) {
     node.scale = {codec.scale(), codec.scale(), codec.scale()};
   }
   model.nodes.push_back(node);
+  const int inkNode = addInkNode(doc, writer, in);
   tinygltf::Scene scene;
   scene.name = in.name;
   scene.nodes = {0};
+  if (inkNode >= 0) scene.nodes.push_back(inkNode);
   model.scenes.push_back(scene);
   model.defaultScene = 0;
 
@@ -293,6 +215,10 @@ GltfDocument buildDocument(const DocumentInput& input) {
     channel.target_node = 0;
     channel.target_path = "weights";
     animation.channels.push_back(channel);
+    if (inkNode >= 0) {
+      channel.target_node = inkNode;  // the ink's strips move with the same targets and weights
+      animation.channels.push_back(channel);
+    }
   }
   if (animated && layers.size() > 1) {
     std::vector<int> all(baked.frames.size());

@@ -2,7 +2,8 @@
 // with one primitive per key drawing that appears (a layer, bottom to top in key order), all
 // sharing the base positions, the indices and the morph targets (one per kept frame but the
 // first, which is the base); a `weights` animation that keeps at most two targets active; the
-// layers' cross-fade as animated alpha factors through KHR_animation_pointer. docs/export.md.
+// layers' cross-fade as animated alpha factors through KHR_animation_pointer; and the ink on
+// opened cuts in a node of its own (ink_node.h). docs/export.md.
 #pragma once
 
 #include "export/baked_animation.h"

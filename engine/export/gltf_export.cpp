@@ -44,6 +44,8 @@ void checkBaked(const BakedAnimation& baked, const render::RenderMesh& mesh) {
     const std::string frame = "writeGltf: frame " + std::to_string(f) + ": ";
     if (baked.positions[f].rows() != mesh.vertexCount || !baked.positions[f].allFinite())
       throw std::invalid_argument(frame + "positions must be finite, one row per vertex");
+    if (!baked.closure.empty() && (baked.closure.size() != frames || baked.closure[f].size() != static_cast<size_t>(mesh.vertexCount)))
+      throw std::invalid_argument(frame + "closure must be empty or one value per vertex in every frame");
     const Eigen::VectorXd& w = baked.weights[f];
     if (w.size() != static_cast<Eigen::Index>(mesh.artwork.size()) || !w.allFinite() || w.minCoeff() < 0 || !(w.sum() > 0))
       throw std::invalid_argument(frame + "weights must be one per key, finite, >= 0 and not all 0");

@@ -1,8 +1,9 @@
 // glTF 2.0 export of a baked animation (`inbetween export`; docs/export.md): one mesh whose morph
 // targets are the frames, a weights animation that keeps at most two targets active, one layer
 // per key drawing cross-faded by animated alpha factors (KHR_animation_pointer), the drawings as
-// embedded PNG textures. Optionally fewer frames (within a bound), 16-bit quantization and
-// meshopt compression. CPU only; front ends include this header alone.
+// embedded PNG textures, opened cuts' outline ink as strips in a second node. Optionally fewer
+// frames (within a bound), 16-bit quantization and meshopt compression. CPU only; front ends
+// include this header alone.
 #pragma once
 
 #include "export/baked_animation.h"

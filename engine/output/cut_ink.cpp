@@ -153,19 +153,35 @@ CutInks cutInksOf(const Multimesh& mesh, const std::vector<RgbaImage>& drawings)
   for (size_t c = 0; c < out.cuts.size(); ++c) {
     std::vector<OutlineInk>& found = read[c];
     if (found.empty()) continue;
-    std::sort(found.begin(), found.end(), [](const OutlineInk& a, const OutlineInk& b) { return a.width < b.width; });
-    out.cuts[c].ink = found[found.size() / 2];  // the median width, with its colour
+    // The narrowest read, with its colour: a march that crosses the line obliquely, where the
+    // outline curves (a narrow neck), only reads it wider.
+    out.cuts[c].ink = *std::min_element(found.begin(), found.end(),
+                                        [](const OutlineInk& a, const OutlineInk& b) { return a.width < b.width; });
   }
-  // Sides and the vertices near them.
+  // Sides, their triangles, and the vertices near them.
+  std::map<Edge, int> apexOf;  // edge {min, max} -> the third vertex of a triangle on it
+  for (const Triangle& t : mesh.triangles())
+    for (int c = 0; c < 3; ++c)
+      apexOf.emplace(Edge{std::min(t[c], t[(c + 1) % 3]), std::max(t[c], t[(c + 1) % 3])}, t[(c + 2) % 3]);
   out.near.assign(static_cast<size_t>(n), {});
   std::vector<std::set<int>> sidesAt(static_cast<size_t>(n));
   for (size_t p = 0; p < pairs.size(); ++p) {
-    if (!out.cuts[cutOfPair[p]].ink.found) continue;
+    const int cut = cutOfPair[p];
+    if (!out.cuts[cut].ink.found) continue;
+    const auto closing = std::find(out.cuts[cut].closedIn.begin(), out.cuts[cut].closedIn.end(), 1);
+    const int rest = static_cast<int>(closing - out.cuts[cut].closedIn.begin());
     for (const Edge& e : {Edge{pairs[p][0], pairs[p][1]}, Edge{pairs[p][2], pairs[p][3]}}) {
-      if (e[0] == e[1]) continue;
+      const auto apex = apexOf.find(Edge{std::min(e[0], e[1]), std::max(e[0], e[1])});
+      if (e[0] == e[1] || apex == apexOf.end()) continue;
+      const Eigen::MatrixX2d& x = mesh.keyPositions(rest);
+      const Eigen::Vector2d a = x.row(e[0]).transpose(), along = x.row(e[1]).transpose() - a;
+      Eigen::Vector2d normal(-along.y(), along.x());
+      if (normal.dot(x.row(apex->second).transpose() - a) < 0) normal = -normal;
       const int side = static_cast<int>(out.sides.size());
       out.sides.push_back(e);
-      out.sideCut.push_back(cutOfPair[p]);
+      out.sideCut.push_back(cut);
+      out.sideApex.push_back(apex->second);
+      out.sideRestNormal.push_back(normal.norm() > 0 ? Eigen::Vector2d(normal.normalized()) : Eigen::Vector2d(0, 0));
       sidesAt[e[0]].insert(side);
       sidesAt[e[1]].insert(side);
     }
@@ -180,6 +196,14 @@ CutInks cutInksOf(const Multimesh& mesh, const std::vector<RgbaImage>& drawings)
   return out;
 }
 
+std::vector<double> openWeights(const CutInks& inks, const Eigen::VectorXd& weights) {
+  std::vector<double> open(inks.cuts.size(), 0.0);
+  for (size_t c = 0; c < inks.cuts.size(); ++c)
+    for (Eigen::Index k = 0; k < weights.size(); ++k)
+      if (k >= static_cast<Eigen::Index>(inks.cuts[c].closedIn.size()) || !inks.cuts[c].closedIn[k]) open[c] += weights(k);
+  return open;
+}
+
 InkFrame inkFrame(const CutInks& inks, const Eigen::MatrixX2d& x, const std::vector<float>& closure,
                   const Eigen::VectorXd& weights, double pixelsPerUnit) {
   const size_t n = static_cast<size_t>(x.rows());
@@ -188,10 +212,7 @@ InkFrame inkFrame(const CutInks& inks, const Eigen::MatrixX2d& x, const std::vec
   out.alpha.assign(n, 0.0f);
   out.width.assign(n, 0.0f);
   out.colour.assign(n, {0, 0, 0});
-  std::vector<double> open(inks.cuts.size(), 0.0);  // o per cut
-  for (size_t c = 0; c < inks.cuts.size(); ++c)
-    for (Eigen::Index k = 0; k < weights.size(); ++k)
-      if (k >= static_cast<Eigen::Index>(inks.cuts[c].closedIn.size()) || !inks.cuts[c].closedIn[k]) open[c] += weights(k);
+  const std::vector<double> open = openWeights(inks, weights);
   for (size_t v = 0; v < n && v < inks.near.size(); ++v) {
     double best = INFINITY;
     int side = -1;
@@ -207,7 +228,7 @@ InkFrame inkFrame(const CutInks& inks, const Eigen::MatrixX2d& x, const std::vec
     const CutInks::Cut& cut = inks.cuts[inks.sideCut[side]];
     const float shut = std::max(closure[inks.sides[side][0]], closure[inks.sides[side][1]]);
     out.distance[v] = static_cast<float>(best * pixelsPerUnit);
-    out.alpha[v] = static_cast<float>((1.0 - shut) * std::clamp(1.0 - open[inks.sideCut[side]], 0.0, 1.0));
+    out.alpha[v] = inkAlpha(shut, open[inks.sideCut[side]]);
     out.width[v] = static_cast<float>(cut.ink.width * pixelsPerUnit);
     out.colour[v] = {cut.ink.colour[0], cut.ink.colour[1], cut.ink.colour[2]};
   }

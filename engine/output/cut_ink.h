@@ -7,6 +7,7 @@
 #include "multimesh/multimesh.h"
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <array>
 #include <vector>
 
@@ -32,7 +33,7 @@ OutlineInk outlineInk(const RgbaImage& drawing, const Eigen::Vector2d& at, const
 Eigen::Vector2d inwardNormal(const RgbaImage& drawing, const Eigen::Vector2d& at, double radius = 3);
 
 // Every cut's ink and where it is drawn, fixed for a multimesh and its drawings: a cut is a chain of
-// cohesive pairs end to end closed in the same keys; its ink is the median of the outline's read
+// cohesive pairs end to end closed in the same keys; its ink is the narrowest of the outline's reads
 // at the chain's two ends (the pair vertices that are also on the outline: boundary vertices of
 // the key) in every key that closes it. Its sides are the pairs' edges {a, b} and {c, d}.
 struct CutInks {
@@ -43,6 +44,10 @@ struct CutInks {
   std::vector<Cut> cuts;
   std::vector<Edge> sides;     // side edges {a, b}
   std::vector<int> sideCut;    // [side]: its cut
+  std::vector<int> sideApex;   // [side]: the third vertex of the side's triangle (into the shape)
+  // [side]: its inward unit normal in the first key that closes its cut (drawing px); there the
+  // cut's two faces lie on one another, facing opposite ways, which tells them apart.
+  std::vector<Eigen::Vector2d> sideRestNormal;
   // Vertices that may lie within a line's width of a side: the sides' vertices and the vertices
   // that share a triangle with them. near[v] lists the sides to measure v against ([] elsewhere).
   std::vector<std::vector<int>> near;
@@ -51,6 +56,14 @@ struct CutInks {
 // drawings: [key], the keys' drawings as read (before silhouetteArtwork), in the multimesh's
 // pixels.
 CutInks cutInksOf(const Multimesh& mesh, const std::vector<RgbaImage>& drawings);
+
+// o per cut: the total of `weights` (m) over the keys that draw the cut open.
+std::vector<double> openWeights(const CutInks& inks, const Eigen::VectorXd& weights);
+
+// How much of a cut's ink a frame draws at a side vertex: (1 - closure) (1 - o).
+inline float inkAlpha(float closure, double open) {
+  return static_cast<float>((1.0 - closure) * std::clamp(1.0 - open, 0.0, 1.0));
+}
 
 // One frame's ink per vertex, for the artwork shader: its distance to the nearest side (target
 // pixels, large away from cuts), the ink's colour (straight RGB) and width (target pixels), and

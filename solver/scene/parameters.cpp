@@ -229,7 +229,7 @@ std::vector<ParameterSpec> makeTable() {
                   [](Scene& s, double v) { s.sampling = static_cast<ArtworkSampling>(v); }));
 
   add(Row("cut_ink", "cut_ink").toggle(scene.cutInk)
-          .meaning("render and play draw the edges a cut opens with the drawings' outline ink, where they have one")
+          .meaning("render, play and export draw the edges a cut opens with the drawings' outline ink, where they have one")
           .invalidates(I::kNothing)
           .access([](const Scene& s) { return s.cutInk ? 1.0 : 0.0; }, [](Scene& s, double v) { s.cutInk = v != 0; }));
 

@@ -88,7 +88,7 @@ struct Scene {
   // Default vertices.
   CornerHandling corners = CornerHandling::kVertices;
   ArtworkSampling sampling = ArtworkSampling::kAuto;  // "sampling": how front ends filter the drawings
-  bool cutInk = true;  // "cut_ink": render and play draw an opening cut's edges with the drawings' outline ink
+  bool cutInk = true;  // "cut_ink": render, play and export draw an opening cut's edges with the drawings' outline ink
   TracingOptions tracing;
   InterpolationParams interpolation;  // "solver": lambda, tau, alpha, non_overlap, metric
   // "solver.kappa": the stiffness of every triangle not painted otherwise (eq. 16), painted into

@@ -5,8 +5,8 @@
 // turned back into drawing pixels (docs/export.md). Compared with REFERENCE.json, the solved and
 // welded frames of tests/tools/welded_frames: every vertex of every frame within 1e-4 shape sizes,
 // or with --max-px within PX drawing pixels (+ 1e-4 shape sizes for float rounding). Also checks:
-// the primitives share their positions and morph weights, at most two weights are nonzero at a
-// frame, the clip lasts (B - A)/fps (or one frame more, a looping timeline's closing keyframe, which
+// the primitives share their positions and morph weights (the ink's node, if any, the weights), at
+// most two weights are nonzero at a frame, the clip lasts (B - A)/fps (or one frame more, a looping timeline's closing keyframe, which
 // must show frame A again), and the layers' alpha factors composite to the keys' weights (within
 // 1e-3), and without the pointer plugin to frame A's (the static factors).
 import { fail, usage, readJson, inbetweenExtras, toPixels, compositeWeights } from './common.mjs';
@@ -60,6 +60,20 @@ for (const [k, other] of meshes.entries()) {
   if (t.length !== targets.length || t.some((a, i) => !same(a, targets[i]))) fail(`${file}: primitive ${k}'s morph targets differ from primitive 0's`);
 }
 
+// Node 1, when there, draws opened cuts' outline ink: one primitive whose morph targets (positions
+// and COLOR_0, the ink's fading alpha) are the shape's kept frames, moved by the same weights, so it
+// plays without the pointer plugin too (GLTFLoader gives it vertex colours with alpha).
+const inkNode = json.nodes.length > 1 ? await gltf.parser.getDependency('node', 1) : null;
+const inkMesh = inkNode ? (inkNode.isMesh ? inkNode : inkNode.children.find((c) => c.isMesh)) : null;
+if (inkNode) {
+  if (!inkMesh) fail(`${file}: node 1 (the ink) has no mesh`);
+  const g = inkMesh.geometry;
+  if ((g.morphAttributes.position ?? []).length !== targets.length || (g.morphAttributes.color ?? []).length !== targets.length)
+    fail(`${file}: the ink has ${(g.morphAttributes.position ?? []).length} position and ${(g.morphAttributes.color ?? []).length} colour morph targets, the shape ${targets.length}`);
+  if (g.attributes.color?.itemSize !== 4 || inkMesh.material.vertexColors !== true || inkMesh.material.transparent !== true)
+    fail(`${file}: the ink's material does not draw its RGBA vertex colours blended`);
+}
+
 // Without the pointer plugin: the static alpha factors, frame A's.
 {
   const plain = await nodeMeshes((await loadGltf(file, { pointer: false })).gltf);
@@ -86,6 +100,7 @@ function check(time, frame, label) {
   const influences = mesh.morphTargetInfluences;
   for (const [k, other] of meshes.entries())
     if (other.morphTargetInfluences.some((w, i) => w !== influences[i])) fail(`${file}: ${label}: primitive ${k}'s morph weights differ from primitive 0's`);
+  if (inkMesh && inkMesh.morphTargetInfluences.some((w, i) => w !== influences[i])) fail(`${file}: ${label}: the ink's morph weights differ from the shape's`);
   mostNonzero = Math.max(mostNonzero, influences.filter((w) => w !== 0).length);
   for (let i = 0; i < n; ++i) {
     mesh.getVertexPosition(i, v).applyMatrix4(mesh.matrixWorld);
