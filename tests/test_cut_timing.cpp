@@ -101,3 +101,40 @@ TEST_CASE("cut timing: keys that draw the same cut with different releases are a
   CHECK_THAT(outOfRange, Catch::Contains("rift_C") && Catch::Contains("release_window"));
   std::filesystem::remove_all(dir);
 }
+
+TEST_CASE("cut timing tau: a larger tau never lets a cut go earlier, and a cut that lets go does so as one and stays "
+          "apart while the timeline goes on") {
+  // drop-split (hang -> neck -> split, the neck's cut closed in hang and neck): the timeline only
+  // moves on, so a cut that let go stays apart to the end.
+  Scene scene = loadScene(std::string(INBETWEEN_SOURCE_DIR) + "/tests/topology/drop-split/scene.json");
+  const BuiltScene built = buildMultimesh(scene, MultimeshBuildOptions{});
+  const Multimesh& mesh = *built.multimesh;
+  std::vector<int> keyOfTerm;  // heldPairs' order: key 0's pairs, then key 1's, ...
+  for (int k = 0; k < mesh.keyCount(); ++k) keyOfTerm.insert(keyOfTerm.end(), mesh.cohesivePairs(k).size(), k);
+  scene.interpolation.cohesive.timing = CutTiming::kTau;
+  int previous = -1;
+  std::vector<int> letGoFrames;
+  for (double tau : {5e-8, 1e-7, 3e-7, 1e-6, 1e-5}) {
+    INFO("tau " << tau);
+    scene.interpolation.cohesive.tau = tau;
+    FrameStream stream = sceneFrameStream(scene, mesh);
+    int letGo = -1, heldAfter = 0;
+    while (!stream.done()) {
+      const AnimationFrame frame = stream.next();
+      REQUIRE(frame.heldPairs.size() == keyOfTerm.size());
+      int held = 0, weighted = 0;
+      for (size_t j = 0; j < keyOfTerm.size(); ++j)
+        if (frame.weights(keyOfTerm[j]) > 0) ++weighted, held += frame.heldPairs[j];
+      if (letGo < 0 && held < weighted) letGo = frame.index;
+      // From the frame after it let go on (the frame itself shows the pairs that passed tau), none holds.
+      else if (letGo >= 0) heldAfter += held;
+    }
+    letGoFrames.push_back(letGo);
+    CHECK(letGo >= 0);
+    CHECK(heldAfter == 0);
+    CHECK(letGo >= previous);
+    previous = letGo;
+  }
+  INFO("let go at frames " << letGoFrames[0] << " .. " << letGoFrames.back());
+  CHECK(letGoFrames.front() < letGoFrames.back());
+}

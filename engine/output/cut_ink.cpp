@@ -1,9 +1,10 @@
 #include "output/cut_ink.h"
 
+#include "multimesh/cut_chains.h"
+
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <numeric>
 #include <set>
 #include <vector>
 
@@ -99,36 +100,15 @@ Eigen::Vector2d inwardNormal(const RgbaImage& drawing, const Eigen::Vector2d& at
 CutInks cutInksOf(const Multimesh& mesh, const std::vector<RgbaImage>& drawings) {
   CutInks out;
   const int n = mesh.vertexCount(), m = mesh.keyCount();
-  // Distinct pairs and the keys that close each.
-  std::map<std::array<int, 4>, std::vector<char>> closing;
-  for (int k = 0; k < m; ++k)
-    for (const CohesivePair& p : mesh.cohesivePairs(k)) {
-      auto& keys = closing[{p.a, p.b, p.c, p.d}];
-      keys.resize(m, 0);
-      keys[k] = 1;
-    }
+  // Distinct pairs, the keys that close each, and their cuts.
+  const CutChains chains = cutChains(mesh);
   std::vector<std::array<int, 4>> pairs;
-  std::vector<std::vector<char>> closedIn;
-  for (const auto& [pair, keys] : closing) pairs.push_back(pair), closedIn.push_back(keys);
-  // Chains by union-find over shared vertices, among pairs closed in the same keys.
-  std::vector<int> parent(pairs.size());
-  std::iota(parent.begin(), parent.end(), 0);
-  const auto root = [&](int p) {
-    while (parent[p] != p) p = parent[p] = parent[parent[p]];
-    return p;
-  };
-  std::map<int, int> firstAt;
-  for (size_t p = 0; p < pairs.size(); ++p)
-    for (int v : pairs[p]) {
-      const auto [it, fresh] = firstAt.emplace(v, static_cast<int>(p));
-      if (!fresh && closedIn[it->second] == closedIn[p]) parent[root(static_cast<int>(p))] = root(it->second);
-    }
-  std::map<int, int> cutOfRoot;
-  std::vector<int> cutOfPair(pairs.size());
-  for (size_t p = 0; p < pairs.size(); ++p) {
-    const auto [it, fresh] = cutOfRoot.emplace(root(static_cast<int>(p)), static_cast<int>(cutOfRoot.size()));
-    cutOfPair[p] = it->second;
-    if (fresh) out.cuts.push_back({OutlineInk{}, closedIn[p]});
+  for (const CohesivePair& p : chains.pairs) pairs.push_back({p.a, p.b, p.c, p.d});
+  const std::vector<std::vector<char>>& closedIn = chains.closedIn;
+  const std::vector<int>& cutOfPair = chains.chainOf;
+  for (int c = 0; c < chains.chains; ++c) {
+    const int first = static_cast<int>(std::find(cutOfPair.begin(), cutOfPair.end(), c) - cutOfPair.begin());
+    out.cuts.push_back({OutlineInk{}, closedIn[first]});
   }
   // The chains' ends: pair vertices used by one pair only (a chain's middle vertices are shared
   // by two), on the mesh boundary in a key that closes the cut.

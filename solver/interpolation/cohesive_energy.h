@@ -8,7 +8,9 @@
 // is not rotation invariant and carries a net torque, so a rotation-gauged solve could not
 // drive it to zero. A pair is *held* while l/3 d < tau (under CutTiming::kRelease: while its
 // term weight, the release ramp, is above 0); a clamped pair costs tau and exerts
-// no force.
+// no force. Under CutTiming::kTau a pair that let go in a solved frame stays apart while the
+// weight of the keys that draw it open does not fall (letGo below): it does not glue again by
+// chance as its sides drift within tau, so when it lets go moves with tau monotonically.
 #pragma once
 
 #include "interpolation/interpolation_params.h"
@@ -39,6 +41,7 @@ struct CohesiveTerm {
   double restLength = 0;           // l_ij, eq. (12)
   Eigen::Vector2d restDirection;   // fallback xhat when the deformed edges collapse
   std::vector<char> closedIn;      // [key]: 1 where the pair is among that key's cohesive pairs
+  int cut = 0;                     // its cut: the chain of pairs it belongs to (cut_chains.h)
 };
 
 class CohesiveEnergy {
@@ -63,6 +66,20 @@ class CohesiveEnergy {
   // Under CutTiming::kRelease: whether term j glues at w (its ramp is 1: the sides are shut).
   bool glued(int term, const Eigen::VectorXd& w) const;
 
+  // The keys that draw term j's pair open: their total weight at w.
+  double openWeight(int term, const Eigen::VectorXd& w) const;
+
+  // CutTiming::kTau's memory of pairs that let go, kept by a stream of solves (Interpolator):
+  // after a solved frame, `letGo` marks every term of a cut that has a term of nonzero weight not
+  // held there (its energy passed tau: the cut lets go as one) with the frame's weights w_L and the direction d = w_L - w_prev they were moving
+  // in (w_prev: the previous letGo call's weights); before a frame, `holdAgain` forgets the ones
+  // the weights went back past, (w - w_L) . d < 0, where the energy decides again. A term that
+  // lets go on the stream's first frame or on a held frame (d = 0) is not marked. A marked term
+  // costs tau and exerts no force. forgetLetGo: none marked, no previous weights.
+  void letGo(const std::vector<char>& held, const Eigen::VectorXd& w);
+  void holdAgain(const Eigen::VectorXd& w);
+  void forgetLetGo();
+
   // Isotropic spring constant standing in for term j in a matrix shared by x and y:
   // l/3 lambda max(alpha, 1 - alpha), the largest eigenvalue of its P, so the spring majorizes it.
   double springConstant(int term) const;
@@ -70,6 +87,11 @@ class CohesiveEnergy {
  private:
   CohesiveParams params_;
   std::vector<CohesiveTerm> terms_;
+  struct LetGo {
+    Eigen::VectorXd at, direction;  // w_L and d (m x 1 each); empty: not let go
+  };
+  std::vector<LetGo> letGo_;      // [term], under CutTiming::kTau (letGo)
+  Eigen::VectorXd lastWeights_;   // the weights of the last letGo call; empty: none yet
 };
 
 }  // namespace ib

@@ -1,10 +1,10 @@
 #include "interpolation/gap_pull.h"
 
+#include "multimesh/cut_chains.h"
+
 #include <Eigen/LU>
 #include <cmath>
-#include <map>
 #include <stdexcept>
-#include <tuple>
 
 namespace ib {
 
@@ -34,27 +34,28 @@ GapPull::GapPull(const Multimesh& mesh, const std::vector<Eigen::MatrixX2d>& key
   for (size_t t = 0; t < mesh.triangles().size(); ++t)
     for (int v : mesh.triangles()[t])
       if (triangleAt[v] < 0) triangleAt[v] = static_cast<int>(t);
-  // The keys that close each distinct pair, and its first term.
-  std::map<std::tuple<int, int, int, int>, std::pair<std::vector<char>, int>> closed;
+  // The distinct pairs, the keys that close each and its cut (cut_chains.h), and its first term.
+  const CutChains cuts = cutChains(mesh);
   const auto& terms = cohesive.terms();
+  std::vector<int> firstTerm(cuts.pairs.size(), -1);
   for (size_t j = 0; j < terms.size(); ++j) {
-    const CohesivePair& p = terms[j].pair;
-    auto& entry = closed[{p.a, p.b, p.c, p.d}];
-    if (entry.first.empty()) entry = {std::vector<char>(mesh.keyCount(), 0), static_cast<int>(j)};
-    entry.first[terms[j].key] = 1;
+    int& first = firstTerm[cuts.indexOf(terms[j].pair)];
+    if (first < 0) first = static_cast<int>(j);
   }
-  for (const auto& [id, entry] : closed) {
-    const CohesiveTerm& term = terms[entry.second];
+  for (size_t id = 0; id < cuts.pairs.size(); ++id) {
+    if (firstTerm[id] < 0) continue;
+    const CohesiveTerm& term = terms[firstTerm[id]];
     Pull pull;
     pull.pair = term.pair;
-    pull.term = entry.second;
+    pull.term = firstTerm[id];
     pull.restLength = term.restLength;
+    pull.chain = cuts.chainOf[id];
     if (triangleAt[pull.pair.a] < 0 || triangleAt[pull.pair.c] < 0)
       throw std::invalid_argument("gap pull: a cohesive pair's vertex is in no triangle");
     pull.at = mesh.triangles()[triangleAt[pull.pair.a]];
     pull.ac = mesh.triangles()[triangleAt[pull.pair.c]];
     for (int k = 0; k < mesh.keyCount(); ++k) {
-      if (entry.first[k]) continue;
+      if (cuts.closedIn[id][k]) continue;
       const Eigen::MatrixX2d& X = keys[k];
       pull.key.push_back(k);
       pull.U.push_back((X.row(pull.pair.a) - X.row(pull.pair.c)).transpose());
@@ -65,28 +66,7 @@ GapPull::GapPull(const Multimesh& mesh, const std::vector<Eigen::MatrixX2d>& key
     }
     if (!pull.key.empty()) pulls_.push_back(std::move(pull));
   }
-  // Chains: pulls that share a vertex and are open in the same keys (one cut's pairs, end to
-  // end), by union-find; each chain turns as one.
-  std::vector<int> parent(pulls_.size());
-  for (size_t p = 0; p < parent.size(); ++p) parent[p] = static_cast<int>(p);
-  const auto root = [&](int p) {
-    while (parent[p] != p) p = parent[p] = parent[parent[p]];
-    return p;
-  };
-  std::map<int, int> firstAt;  // vertex -> a pull using it
-  for (size_t p = 0; p < pulls_.size(); ++p) {
-    const CohesivePair& q = pulls_[p].pair;
-    for (int v : {q.a, q.b, q.c, q.d}) {
-      const auto [it, fresh] = firstAt.emplace(v, static_cast<int>(p));
-      if (!fresh && pulls_[it->second].key == pulls_[p].key) parent[root(static_cast<int>(p))] = root(it->second);
-    }
-  }
-  std::map<int, int> chainOfRoot;
-  for (size_t p = 0; p < pulls_.size(); ++p) {
-    const auto [it, fresh] = chainOfRoot.emplace(root(static_cast<int>(p)), static_cast<int>(chainOfRoot.size()));
-    pulls_[p].chain = it->second;
-  }
-  chains_ = static_cast<int>(chainOfRoot.size());
+  chains_ = cuts.chains;
   for (const Pull& pull : pulls_) slots_ = std::max(slots_, pull.key.size());
 }
 

@@ -15,7 +15,8 @@ namespace ib {
 enum class CutTiming {
   kRelease,  // by the weights: the closed keys' pull fades as the open keys' weight o passes
              // `release` over `releaseWindow`, and the open keys pull the sides to their drawn gap
-  kTau,      // by the energy: a pair lets go when its cohesive energy exceeds tau (the paper)
+  kTau,      // by the energy: a cut lets go when a pair's cohesive energy exceeds tau (the paper),
+             // all its pairs at once, and stays apart until the weights go back (cohesive_energy.h)
 };
 
 // One cut's own timing (a scene cut's "release" and "release_window"); NaN: the scene's.

@@ -180,6 +180,10 @@ InterpolationResult Interpolator::Impl::solve(const Eigen::VectorXd& w, const Ei
   const auto started = std::chrono::steady_clock::now();
   TeamScope team(budget_);  // the threads this solve runs on, asked again every iteration
   const Frame frame = makeFrame(w, springs);
+  // CutTiming::kTau: pairs let go by earlier frames stay apart unless the weights turned back; a
+  // solve from the blend (no warm start) is a fresh start, where nothing let go before.
+  if (warmStart) cohesive_->holdAgain(frame.w);
+  else cohesive_->forgetLetGo();
   State s;
   if (warmStart) {
     if (warmStart->rows() != vertexCount() || !warmStart->allFinite())
@@ -321,6 +325,7 @@ InterpolationResult Interpolator::Impl::solve(const Eigen::VectorXd& w, const Ei
   // The pairs that glue (under CutTiming::kRelease the ones whose closing pull is whole: a pair
   // fading out over the release window is still a spring in H, but its sides are parting).
   result.heldPairs = s.held;
+  if (!result.cancelled) cohesive_->letGo(s.held, frame.w);
   if (params_.cohesive.timing == CutTiming::kRelease)
     for (size_t j = 0; j < result.heldPairs.size(); ++j)
       result.heldPairs[j] = result.heldPairs[j] && cohesive_->glued(static_cast<int>(j), frame.w);

@@ -140,8 +140,8 @@ class Interpolator {
   InterpolationResult solve(const Eigen::VectorXd& w, const Eigen::MatrixX2d* warmStart = nullptr,
                             const VertexSprings* springs = nullptr);
 
-  // Forgets what carries over from frame to frame (the Anderson history and the factorization of
-  // H), so the next solve behaves exactly as on a fresh Interpolator: a stream restarted from its
+  // Forgets what carries over from frame to frame (the Anderson history, the factorization of H
+  // and, under CutTiming::kTau, which pairs let go), so the next solve behaves exactly as on a fresh Interpolator: a stream restarted from its
   // first frame repeats its frames bit for bit.
   void forgetHistory();
 

@@ -44,6 +44,7 @@ void validateStiffness(const Eigen::VectorXd& kappa, int triangleCount) {
 void Interpolator::Impl::forgetHistory() {
   anderson_.reset();
   global_->invalidate();
+  cohesive_->forgetLetGo();
 }
 
 void Interpolator::Impl::checkCutTimings(const InterpolationParams& params) const {
