@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <utility>
 
 using namespace ib;
 
@@ -65,16 +66,29 @@ TEST_CASE("gap pull: its gradient is the energy's derivative, and its rotations 
   CHECK(worst < 1e-6 * std::max(1.0, gradient.norm()));
 }
 
-TEST_CASE("gap pull: the release ramp is whole below the window, gone above it, and keeps within [0, 1]") {
+TEST_CASE("gap pull: the release ramp is whole below the window, gone above it, keeps within [0, 1], and the gap it "
+          "leaves starts at rest and grows at most 4/3 as fast as the window's span allows") {
   CohesiveParams p;
   p.release = 0.5;
   p.releaseWindow = 0.3;
   CHECK(releaseRamp(0.0, p) == 1);
   CHECK(releaseRamp(0.35, p) == 1);
-  CHECK(releaseRamp(0.5, p) == Approx(0.5));
   CHECK(releaseRamp(0.65, p) == 0);
   CHECK(releaseRamp(1.0, p) == 0);
   for (double o = 0.35; o < 0.65; o += 0.01) CHECK(releaseRamp(o + 0.01, p) <= releaseRamp(o, p));
+  // The gap (1 - r) o, for the default window [0, 1] and this one [0.35, 0.65]: its slope in o is
+  // 0 where it parts and at most 4/3 hi / (hi - lo) (docs/solver.md, "Cut timing").
+  for (const auto& [release, window] : {std::pair{0.5, 1.0}, std::pair{0.5, 0.3}}) {
+    INFO("release " << release << ", window " << window);
+    const double lo = release - window / 2, hi = release + window / 2, h = 1e-5;
+    const auto gap = [&](double o) { return (1 - releaseRamp(o, release, window)) * o; };
+    CHECK(std::abs(gap(lo + h) - gap(lo)) / h < 1e-3);
+    double steepest = 0;
+    for (double o = lo; o + h <= hi; o += 0.001) steepest = std::max(steepest, (gap(o + h) - gap(o)) / h);
+    CHECK(steepest <= 4.0 / 3.0 * hi / (hi - lo) * (1 + 1e-3));
+    CHECK(steepest >= 4.0 / 3.0 * hi / (hi - lo) * (1 - 1e-2));
+    CHECK(gap(hi) == Approx(hi));
+  }
   p.release = 0.95;  // the window would reach past 1: the open key is still open
   CHECK(releaseRamp(1.0, p) == 0);
   p.release = 0.05;  // and before 0: the closed key is still glued

@@ -47,7 +47,11 @@ double releaseRamp(double openWeight, double release, double window) {
   if (openWeight <= lo) return 1;
   if (openWeight >= hi) return 0;
   const double u = (openWeight - lo) / (hi - lo);
-  return 1 - u * u * (3 - 2 * u);
+  // The gap (1 - r) o follows hi G(u), G = 2u^2 - u^3: it leaves the glued sides at rest (G'(0) =
+  // 0) and grows at most 4/3 as fast as the weights (at u = 2/3), where (1 - r) = smoothstep(u)
+  // made it 1.69 (at o = 0.75).
+  const double gap = hi * u * u * (2 - u);
+  return std::clamp(1 - gap / openWeight, 0.0, 1.0);
 }
 
 double releaseRamp(double openWeight, const CohesiveParams& params) {

@@ -22,9 +22,11 @@
 
 namespace ib {
 
-// CutTiming::kRelease: the share of a cut's closing pull at the open keys' total weight o, 1 below
-// release - window/2, 0 above release + window/2 (both kept within [0, 1]), a smoothstep between. The gap pull (gap_pull.h)
-// takes the rest, 1 - r.
+// CutTiming::kRelease: the share r of a cut's closing pull at the open keys' total weight o, 1
+// below lo = release - window/2, 0 above hi = release + window/2 (both kept within [0, 1]), and
+// between them such that the gap, (1 - r) o of the drawn one, is hi G(u) with G(u) = 2u^2 - u^3,
+// u = (o - lo) / (hi - lo): at rest where it parts, at most 4/3 as fast as the weights. The gap
+// pull (gap_pull.h) takes the rest, 1 - r.
 double releaseRamp(double openWeight, double release, double window);
 double releaseRamp(double openWeight, const CohesiveParams& params);  // the scene's release and window
 // The gap pull's fade after the window: 1 up to release + window/2, 0 from a window further on

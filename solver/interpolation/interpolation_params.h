@@ -33,11 +33,12 @@ struct CohesiveParams {
   double alpha = 0.5;      // shear/stretch control alpha in [0, 1] (eq. 13): the jump along the
                            // edge costs (1 - alpha), across it alpha; larger alpha = easier shear
   CutTiming timing = CutTiming::kRelease;
-  double release = 0.5;        // the open keys' total weight at which the closed pull is half, in [0, 1]
+  double release = 0.5;        // the open keys' total weight at the middle of the window over which
+                               // a cut lets go, in [0, 1]
   double releaseWindow = 1.0;  // the span of that weight over which it fades, in (0, 1], kept
                                // within [0, 1] (so a closed key is glued and an open key open);
-                               // default 1: the sides part over the whole segment, fastest at
-                               // `release` (bench pops: every test scene within 2.2x its median)
+                               // default 1: the sides part over the whole segment (bench pops,
+                               // docs/benchmarks.md)
   // Per cohesive term, in the multimesh's order (key 0's pairs, then key 1's, ...): the term's
   // cut's own timing where the scene gives one (pipeline/cut_release.h). Empty: the two above
   // for every cut. Default empty.

@@ -158,7 +158,7 @@ std::vector<ParameterSpec> makeTable() {
           .access([](const Scene& s) { return double(s.interpolation.cohesive.timing); },
                   [](Scene& s, double v) { s.interpolation.cohesive.timing = static_cast<CutTiming>(v); }));
   add(Row("release", "solver.release").number(solver.cohesive.release, 0, 1)
-          .meaning("the weight of the keys where a cut is open at which it is half let go (0.5: halfway between the keys)")
+          .meaning("the weight of the keys where a cut is open at the middle of its letting go (0.5: halfway between the keys)")
           .live()
           .access([](const Scene& s) { return s.interpolation.cohesive.release; },
                   [](Scene& s, double v) { s.interpolation.cohesive.release = v; }));
