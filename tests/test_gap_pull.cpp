@@ -78,7 +78,8 @@ TEST_CASE("gap pull: the release ramp is whole below the window, gone above it, 
   for (double o = 0.35; o < 0.65; o += 0.01) CHECK(releaseRamp(o + 0.01, p) <= releaseRamp(o, p));
   // The gap (1 - r) o, for the default window [0, 1] and this one [0.35, 0.65]: its slope in o is
   // 0 where it parts and at most 4/3 hi / (hi - lo) (docs/solver.md, "Cut timing").
-  for (const auto& [release, window] : {std::pair{0.5, 1.0}, std::pair{0.5, 0.3}}) {
+  for (const auto& [releaseAt, windowOf] : {std::pair{0.5, 1.0}, std::pair{0.5, 0.3}}) {
+    const double release = releaseAt, window = windowOf;  // lambdas may not capture structured bindings (clang)
     INFO("release " << release << ", window " << window);
     const double lo = release - window / 2, hi = release + window / 2, h = 1e-5;
     const auto gap = [&](double o) { return (1 - releaseRamp(o, release, window)) * o; };
