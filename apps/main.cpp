@@ -1,6 +1,7 @@
 // The `inbetween` command: a thin front end over the solver and the engine.
 // Exit codes: 0 success, 2 bad input (message names the file, field or option), 1 internal error.
 #include "commands/bench_launcher.h"
+#include "commands/edit_command.h"
 #include "commands/export_command.h"
 #include "commands/mesh_command.h"
 #include "commands/parameters_command.h"
@@ -35,6 +36,8 @@ constexpr const char* kUsage =
     "  export SCENE   export the scene's animation as glTF 2.0 (.glb / .gltf) (see `inbetween export --help`)\n"
     ENGINE_COMMAND("  render SCENE   render the scene's animation to PNG frames, headless (see `inbetween render --help`)\n")
     ENGINE_COMMAND("  play SCENE     play the scene in a window with every parameter as a slider (see `inbetween play --help`)\n")
+    "  new SCENE A.png B.png ...   start a scene from drawings, one key each (see `inbetween new --help`)\n"
+    "  edit SCENE --apply OPS.json   apply operations to a scene: keys, features, cuts, marks (see `inbetween edit --help`)\n"
     "  parameters     every parameter a scene, --set and the player take (see `inbetween parameters --help`)\n"
     "  bench interp   benchmark the interpolation solver; one JSON object per case\n"
     "  bench comesh   benchmark Comesh Optimization; one JSON object per case\n"
@@ -68,6 +71,8 @@ int run(const std::vector<std::string>& args) {
   if (command == "bench") ib::runBenchProgram(rest);
   if (command == "mesh") return ib::runMesh(rest);
   if (command == "parameters") return ib::runParameters(rest);
+  if (command == "edit") return ib::runEdit(rest);
+  if (command == "new") return ib::runNew(rest);
   if (command == "export") return ib::runExport(rest);
 #ifdef INBETWEEN_WITH_ENGINE
   if (command == "render") return ib::runRender(rest);
@@ -77,7 +82,7 @@ int run(const std::vector<std::string>& args) {
     throw ib::InputError(command + ": this inbetween was built without the engine (INBETWEEN_ENGINE=OFF)");
 #endif
   throw ib::InputError("unknown command '" + command + "'" +
-                       ib::didYouMean(command, {"mesh", "render", "play", "export", "parameters", "bench"}) +
+                       ib::didYouMean(command, {"mesh", "render", "play", "export", "parameters", "new", "edit", "bench"}) +
                        " (see `inbetween --help`)");
 }
 

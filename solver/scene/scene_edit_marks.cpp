@@ -85,13 +85,18 @@ void applyMarkEdit(Json& root, const SceneEdit& edit) {
               if (!(sum > 0)) throw InputError("timeline: a breakdown needs a positive weight for at least one key");
               mark["weights"] = std::move(weights);
             }
+            if (!e.ease.empty()) {
+              Json ease = Json::parse(e.ease, nullptr, false);
+              if (ease.is_discarded()) throw InputError("timeline: the new mark's ease is not JSON: " + e.ease);
+              mark["ease"] = std::move(ease);
+            }
             Json& list = marks(root);
             const auto at = std::find_if(list.begin(), list.end(), [&](const Json& m) { return timeOf(m) >= time.get<double>(); });
             if (at != list.end() && timeOf(*at) == time.get<double>())
               throw InputError("timeline: mark " + std::to_string(at - list.begin() + 1) + " is at " + seconds(e.time) +
                                " already: move it, or add this mark at another time");
             const bool last = at == list.end();
-            if (!last) mark["ease"] = "linear";
+            if (!last && !mark.contains("ease")) mark["ease"] = "linear";
             if (last && !list.empty() && !list.back().contains("ease")) list.back()["ease"] = "linear";
             list.insert(at, std::move(mark));
           },

@@ -61,7 +61,14 @@ struct SetStiffnessKappa { std::string name; double kappa; };
 struct ScaleStiffness { double factor; };
 
 // Timeline marks, by index in time order. key or weights (relative, by key name): exactly one.
-struct AddMark { double time; std::string key; std::vector<std::pair<std::string, double>> weights = {}; };
+// ease: the mark's "ease" as JSON text (a name such as "ease-in-out", or {"cubic_bezier": [...]});
+// empty: none (linear). The document's validation names a bad one.
+struct AddMark {
+  double time;
+  std::string key;
+  std::vector<std::pair<std::string, double>> weights = {};
+  std::string ease = {};
+};
 struct MoveMark { int index; double time; };
 struct RemoveMark { int index; };
 struct SetMarkKey { int index; std::string key; };

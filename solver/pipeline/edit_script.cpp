@@ -1,0 +1,118 @@
+#include "pipeline/edit_script.h"
+
+#include "core/error.h"
+#include "core/png_image.h"
+#include "meshing/key_shape.h"
+#include "meshing/tracing.h"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+
+namespace ib {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// The traced outlines of the keys' drawings, by drawing path, traced once.
+class Outlines {
+ public:
+  Outlines(const TracingOptions& tracing) : tracing_(tracing) {}
+  const std::vector<Outline>& of(const std::string& drawing) {
+    auto it = cache_.find(drawing);
+    if (it == cache_.end()) {
+      const RgbaImage image = readPng(drawing);
+      it = cache_.emplace(drawing, traceOutlines(shapeMask(image, tracing_, {}, drawing), tracing_, drawing)).first;
+    }
+    return it->second;
+  }
+
+ private:
+  TracingOptions tracing_;
+  std::map<std::string, std::vector<Outline>> cache_;
+};
+
+// The nearest point to p on any loop of `outlines`.
+Eigen::Vector2d nearestOnOutlines(const std::vector<Outline>& outlines, const Eigen::Vector2d& p) {
+  Eigen::Vector2d best = p;
+  double bestDistance = INFINITY;
+  const auto visit = [&](const Polyline& loop) {
+    for (size_t i = 0; i < loop.size(); ++i) {
+      const Eigen::Vector2d a = loop[i], b = loop[(i + 1) % loop.size()], d = b - a;
+      const double t = d.squaredNorm() > 0 ? std::clamp((p - a).dot(d) / d.squaredNorm(), 0.0, 1.0) : 0.0;
+      const Eigen::Vector2d q = a + t * d;
+      if ((q - p).norm() < bestDistance) bestDistance = (q - p).norm(), best = q;
+    }
+  };
+  for (const Outline& o : outlines) {
+    visit(o.outer);
+    for (const Polyline& hole : o.holes) visit(hole);
+  }
+  return best;
+}
+
+std::string pointText(const Eigen::Vector2d& p) {
+  char text[64];
+  std::snprintf(text, sizeof text, "(%.1f, %.1f)", p.x(), p.y());
+  return text;
+}
+
+}  // namespace
+
+void applyEditScript(SceneDocument& doc, const std::vector<EditOp>& ops, const std::string& opsFile,
+                     const EditScriptOptions& options) {
+  if (doc.problem()) throw InputError(*doc.problem() + " (fix the scene before applying " + fs::path(opsFile).filename().string() + ")");
+  const Scene start = doc.scene();
+  const fs::path folder = fs::path(doc.path()).parent_path();
+  std::map<std::string, std::string> drawingOf;  // key -> drawing path as the scene resolves it
+  for (const KeySpec& key : start.keys) drawingOf[key.name] = key.drawing;
+  Outlines outlines(start.tracing);
+  const std::string where = fs::path(opsFile).filename().string();
+  for (const EditOp& op : ops) {
+    const std::string which = where + ": operation " + std::to_string(op.index) + " (" + op.op + "): ";
+    try {
+      edit::SceneEdit e = op.edit;
+      if (op.snapsToOutline) {
+        auto& feature = std::get<edit::SetFeature>(e);
+        const auto drawing = drawingOf.find(feature.key);
+        if (drawing == drawingOf.end()) {
+          doc.apply(e);  // no such key: the document's message (did you mean)
+          continue;
+        }
+        const Eigen::Vector2d on = nearestOnOutlines(outlines.of(drawing->second), feature.at);
+        const double distance = (on - feature.at).norm();
+        if (distance > options.snapDistance) {
+          char far[64];
+          std::snprintf(far, sizeof far, "%.1f", distance);
+          throw InputError("feature " + inQuotes(feature.name) + " at " + pointText(feature.at) + " is " + far +
+                           " px from key " + inQuotes(feature.key) + "'s outline (its nearest point is " + pointText(on) +
+                           "): place it within " + std::to_string(static_cast<int>(options.snapDistance)) + " px of the outline");
+        }
+        feature.at = on;
+      }
+      if (!op.assignment.empty()) doc.setFromText(op.assignment);
+      else doc.apply(e);
+      if (const auto* added = std::get_if<edit::AddKey>(&op.edit))
+        drawingOf[added->name] = fs::path(added->drawing).is_absolute() ? added->drawing : (folder / added->drawing).string();
+      if (const auto* removed = std::get_if<edit::RemoveKey>(&op.edit)) drawingOf.erase(removed->name);
+    } catch (const InputError& e) {
+      const std::string message = e.what();
+      throw InputError(message.rfind(where + ": operation", 0) == 0 ? message : which + message);
+    }
+  }
+  if (doc.problem()) throw InputError(where + ": after the operations, the scene does not load: " + *doc.problem());
+  const Scene& scene = doc.scene();
+  KeyShapeOptions shape;
+  shape.snapDistance = options.snapDistance;
+  for (int k = 0; k < static_cast<int>(scene.keys.size()); ++k) {
+    try {
+      buildKeyShape(scene, k, outlines.of(scene.keys[k].drawing), shape);
+    } catch (const InputError& e) {
+      throw InputError(where + ": after the operations: " + e.what());
+    }
+  }
+}
+
+}  // namespace ib
