@@ -16,7 +16,7 @@ TEST_CASE("cli: --help exits 0 with the usage on stdout, naming every command") 
   CHECK(run.code == 0);
   CHECK(run.err.empty());
   CHECK_THAT(run.out, StartsWith("usage: inbetween COMMAND [OPTIONS]\n"));
-  for (const char* command : {"mesh SCENE", "export SCENE", "parameters", "bench interp", "bench examples"})
+  for (const char* command : {"mesh SCENE", "export SCENE", "new SCENE", "edit SCENE", "parameters", "bench interp", "bench examples"})
     CHECK_THAT(run.out, Contains(std::string("\n  ") + command));
 }
 
