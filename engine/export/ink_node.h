@@ -1,7 +1,7 @@
 // The glTF node that draws opened cuts' outline ink (internal to the exporter): one mesh of ink
 // strips (export/ink_strips.h) with the same morph targets as the shape's mesh, so one weights
 // animation moves both, and the ink's alpha per vertex carried as COLOR_0 morph-target deltas, so
-// it fades in every client that morphs (three.js core, Babylon.js), without KHR_animation_pointer.
+// it fades in clients that morph vertex colours (three.js core) without KHR_animation_pointer.
 // docs/export.md "Ink on opened cuts".
 #pragma once
 
