@@ -27,12 +27,13 @@ CohesiveEnergy::CohesiveEnergy(const Multimesh& mesh, const std::vector<Eigen::M
     t.closedIn = cuts.closedIn[id];
     t.cut = cuts.chainOf[id];
   }
+  letGo_.resize(static_cast<size_t>(cuts.chains));
 }
 
 namespace {
 
 // The open keys' total weight for a term: sum of w_k over the keys that do not close its pair.
-double openWeightOf(const CohesiveTerm& t, const Eigen::VectorXd& w) {
+double openWeight(const CohesiveTerm& t, const Eigen::VectorXd& w) {
   double open = 0;
   for (Eigen::Index k = 0; k < w.size(); ++k)
     if (!t.closedIn[k]) open += w(k);
@@ -80,14 +81,14 @@ double CohesiveEnergy::termWeight(int term, const Eigen::VectorXd& w) const {
   if (params_.timing == CutTiming::kTau || weight <= 0) return weight;
   // The closing keys share r between them (their weights sum to 1 - o), the open keys 1 - r
   // (gap_pull.h): the gap is then (1 - r) of the drawn one, whatever the weights' split.
-  const double open = openWeightOf(t, w);
+  const double open = openWeight(t, w);
   return open < 1 ? ramp(term, w) * weight / (1 - open) : 0.0;
 }
 
 double CohesiveEnergy::ramp(int term, const Eigen::VectorXd& w) const {
   if (params_.timing == CutTiming::kTau) return 1.0;
   const CutRelease own = timingOf(term, params_);
-  return releaseRamp(openWeightOf(terms_[term], w), own.release, own.window);
+  return releaseRamp(openWeight(terms_[term], w), own.release, own.window);
 }
 
 bool CohesiveEnergy::glued(int term, const Eigen::VectorXd& w) const {
@@ -95,23 +96,13 @@ bool CohesiveEnergy::glued(int term, const Eigen::VectorXd& w) const {
   return w(t.key) > 0 && ramp(term, w) == 1;
 }
 
-double CohesiveEnergy::openWeight(int term, const Eigen::VectorXd& w) const { return openWeightOf(terms_[term], w); }
-
 void CohesiveEnergy::letGo(const std::vector<char>& held, const Eigen::VectorXd& w) {
   if (params_.timing != CutTiming::kTau) return;
-  letGo_.resize(terms_.size());
-  if (lastWeights_.size() == w.size() && lastWeights_ != w) {
-    // A cut lets go as one: when one of its pairs does, all of them.
-    std::vector<char> cutLetGo;
-    for (size_t j = 0; j < terms_.size() && j < held.size(); ++j)
-      if (!held[j] && letGo_[j].at.size() == 0 && termWeight(static_cast<int>(j), w) > 0) {
-        cutLetGo.resize(std::max(cutLetGo.size(), static_cast<size_t>(terms_[j].cut) + 1), 0);
-        cutLetGo[terms_[j].cut] = 1;
-      }
-    for (size_t j = 0; j < terms_.size(); ++j)
-      if (static_cast<size_t>(terms_[j].cut) < cutLetGo.size() && cutLetGo[terms_[j].cut] && letGo_[j].at.size() == 0)
-        letGo_[j] = {w, w - lastWeights_};
-  }
+  if (lastWeights_.size() == w.size() && lastWeights_ != w)
+    for (size_t j = 0; j < terms_.size() && j < held.size(); ++j) {
+      LetGo& cut = letGo_[terms_[j].cut];
+      if (!held[j] && cut.at.size() == 0 && termWeight(static_cast<int>(j), w) > 0) cut = {w, w - lastWeights_};
+    }
   lastWeights_ = w;
 }
 
@@ -121,7 +112,7 @@ void CohesiveEnergy::holdAgain(const Eigen::VectorXd& w) {
 }
 
 void CohesiveEnergy::forgetLetGo() {
-  letGo_.clear();
+  for (LetGo& g : letGo_) g = LetGo{};
   lastWeights_.resize(0);
 }
 
@@ -137,7 +128,7 @@ double CohesiveEnergy::evaluate(const Eigen::MatrixX2d& x, const Eigen::VectorXd
     const CohesiveTerm& t = terms_[j];
     const double weight = termWeight(static_cast<int>(j), w);
     if (weight <= 0) continue;
-    if (params_.timing == CutTiming::kTau && j < letGo_.size() && letGo_[j].at.size() > 0) {
+    if (params_.timing == CutTiming::kTau && letGo_[t.cut].at.size() > 0) {
       energy += weight * params_.tau;  // let go in an earlier frame (letGo): clamped
       continue;
     }

@@ -8,8 +8,8 @@
 // is not rotation invariant and carries a net torque, so a rotation-gauged solve could not
 // drive it to zero. A pair is *held* while l/3 d < tau (under CutTiming::kRelease: while its
 // term weight, the release ramp, is above 0); a clamped pair costs tau and exerts
-// no force. Under CutTiming::kTau a pair that let go in a solved frame stays apart while the
-// weight of the keys that draw it open does not fall (letGo below): it does not glue again by
+// no force. Under CutTiming::kTau a cut whose pair let go in a solved frame lets go as one and stays
+// apart until the weights go back past that point (letGo below): it does not glue again by
 // chance as its sides drift within tau, so when it lets go moves with tau monotonically.
 #pragma once
 
@@ -68,16 +68,14 @@ class CohesiveEnergy {
   // Under CutTiming::kRelease: whether term j glues at w (its ramp is 1: the sides are shut).
   bool glued(int term, const Eigen::VectorXd& w) const;
 
-  // The keys that draw term j's pair open: their total weight at w.
-  double openWeight(int term, const Eigen::VectorXd& w) const;
-
-  // CutTiming::kTau's memory of pairs that let go, kept by a stream of solves (Interpolator):
-  // after a solved frame, `letGo` marks every term of a cut that has a term of nonzero weight not
-  // held there (its energy passed tau: the cut lets go as one) with the frame's weights w_L and the direction d = w_L - w_prev they were moving
-  // in (w_prev: the previous letGo call's weights); before a frame, `holdAgain` forgets the ones
-  // the weights went back past, (w - w_L) . d < 0, where the energy decides again. A term that
-  // lets go on the stream's first frame or on a held frame (d = 0) is not marked. A marked term
-  // costs tau and exerts no force. forgetLetGo: none marked, no previous weights.
+  // CutTiming::kTau's memory of cuts that let go, kept by a stream of solves (Interpolator):
+  // after a solved frame, `letGo` marks every cut with a term of nonzero weight not held there
+  // (its energy passed tau) with the frame's weights w_L and the direction d = w_L - w_prev they
+  // were moving in (w_prev: the previous letGo call's weights); before a frame, `holdAgain`
+  // forgets the cuts the weights went back past, (w - w_L) . d < 0, where the energy decides
+  // again. A cut that lets go on the stream's first frame or on a held frame (d = 0) is not
+  // marked. Every term of a marked cut costs tau and exerts no force. forgetLetGo: none marked,
+  // no previous weights.
   void letGo(const std::vector<char>& held, const Eigen::VectorXd& w);
   void holdAgain(const Eigen::VectorXd& w);
   void forgetLetGo();
@@ -92,7 +90,7 @@ class CohesiveEnergy {
   struct LetGo {
     Eigen::VectorXd at, direction;  // w_L and d (m x 1 each); empty: not let go
   };
-  std::vector<LetGo> letGo_;      // [term], under CutTiming::kTau (letGo)
+  std::vector<LetGo> letGo_;      // [cut], under CutTiming::kTau (letGo)
   Eigen::VectorXd lastWeights_;   // the weights of the last letGo call; empty: none yet
 };
 
