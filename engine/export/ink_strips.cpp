@@ -10,15 +10,6 @@ namespace ib::gltf {
 
 namespace {
 
-// The side's inward unit normal at positions x: perpendicular to it, towards its triangle's apex.
-Eigen::Vector2d inwardNormal(const render::CutInks& inks, int side, const Eigen::MatrixX2d& x) {
-  const Edge& e = inks.sides[side];
-  const Eigen::Vector2d a = x.row(e[0]).transpose(), along = x.row(e[1]).transpose() - a;
-  Eigen::Vector2d normal(-along.y(), along.x());
-  if (normal.dot(x.row(inks.sideApex[side]).transpose() - a) < 0) normal = -normal;
-  return normal.norm() > 0 ? Eigen::Vector2d(normal.normalized()) : Eigen::Vector2d(0, 0);
-}
-
 // The sRGB transfer function undone: glTF vertex colours are linear, the drawings' sRGB.
 float linear(float srgb) {
   return srgb <= 0.04045f ? srgb / 12.92f : std::pow((srgb + 0.055f) / 1.055f, 2.4f);
@@ -78,7 +69,7 @@ Eigen::MatrixX2d inkStripPositions(const InkStrips& strips, const render::CutInk
   Eigen::MatrixX2d out(strips.vertexCount(), 2);
   for (int v = 0; v < strips.vertexCount(); ++v) {
     Eigen::Vector2d p = x.row(strips.source[v]).transpose(), direction(0, 0);
-    for (int s : strips.inward[v]) direction += inwardNormal(inks, s, x);
+    for (int s : strips.inward[v]) direction += render::sideNormal(inks, s, x);
     const double width = inks.cuts[strips.cut[v]].ink.width;
     if (direction.norm() > 1e-9) {
       direction.normalize();

@@ -153,15 +153,11 @@ CutInks cutInksOf(const Multimesh& mesh, const std::vector<RgbaImage>& drawings)
     for (const Edge& e : {Edge{pairs[p][0], pairs[p][1]}, Edge{pairs[p][2], pairs[p][3]}}) {
       const auto apex = apexOf.find(Edge{std::min(e[0], e[1]), std::max(e[0], e[1])});
       if (e[0] == e[1] || apex == apexOf.end()) continue;
-      const Eigen::MatrixX2d& x = mesh.keyPositions(rest);
-      const Eigen::Vector2d a = x.row(e[0]).transpose(), along = x.row(e[1]).transpose() - a;
-      Eigen::Vector2d normal(-along.y(), along.x());
-      if (normal.dot(x.row(apex->second).transpose() - a) < 0) normal = -normal;
       const int side = static_cast<int>(out.sides.size());
       out.sides.push_back(e);
       out.sideCut.push_back(cut);
       out.sideApex.push_back(apex->second);
-      out.sideRestNormal.push_back(normal.norm() > 0 ? Eigen::Vector2d(normal.normalized()) : Eigen::Vector2d(0, 0));
+      out.sideRestNormal.push_back(sideNormal(out, side, mesh.keyPositions(rest)));
       sidesAt[e[0]].insert(side);
       sidesAt[e[1]].insert(side);
     }
@@ -174,6 +170,14 @@ CutInks cutInksOf(const Multimesh& mesh, const std::vector<RgbaImage>& drawings)
         if (std::find(out.near[v].begin(), out.near[v].end(), side) == out.near[v].end()) out.near[v].push_back(side);
   }
   return out;
+}
+
+Eigen::Vector2d sideNormal(const CutInks& inks, int side, const Eigen::MatrixX2d& x) {
+  const Edge& e = inks.sides[side];
+  const Eigen::Vector2d a = x.row(e[0]).transpose(), along = x.row(e[1]).transpose() - a;
+  Eigen::Vector2d normal(-along.y(), along.x());
+  if (normal.dot(x.row(inks.sideApex[side]).transpose() - a) < 0) normal = -normal;
+  return normal.norm() > 0 ? Eigen::Vector2d(normal.normalized()) : Eigen::Vector2d(0, 0);
 }
 
 std::vector<double> openWeights(const CutInks& inks, const Eigen::VectorXd& weights) {

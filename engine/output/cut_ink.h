@@ -57,6 +57,10 @@ struct CutInks {
 // pixels.
 CutInks cutInksOf(const Multimesh& mesh, const std::vector<RgbaImage>& drawings);
 
+// Side s's inward unit normal at positions x (n x 2): perpendicular to it, towards its triangle's
+// apex (0 for a side of no length).
+Eigen::Vector2d sideNormal(const CutInks& inks, int side, const Eigen::MatrixX2d& x);
+
 // o per cut: the total of `weights` (m) over the keys that draw the cut open.
 std::vector<double> openWeights(const CutInks& inks, const Eigen::VectorXd& weights);
 
