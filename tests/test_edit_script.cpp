@@ -6,9 +6,12 @@
 #include "pipeline/edit_script.h"
 #include "scene/edit_ops.h"
 #include "scene/scene_document.h"
+#include "testkit/drawings.h"
 
 #include <catch2/catch.hpp>
+#include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <set>
 
 using namespace ib;
@@ -72,4 +75,32 @@ TEST_CASE("edit script: a feature placed off its key's outline is refused with t
     CHECK(message.find("px from key \"closed\"'s outline") != std::string::npos);
     CHECK(message.find("within 8 px") != std::string::npos);
   }
+}
+
+TEST_CASE("edit script: features snap onto the outline the mesher traces, a hole the artist marked on paper included") {
+  // 128 px on white paper: an orange disc (r 45 at (64, 64)) with a white belly (r 18 at (64, 76))
+  // that the scene marks a hole. Its rim is outline only with the hole point.
+  RgbaImage drawing;
+  drawing.width = drawing.height = 128;
+  drawing.pixels.assign(128 * 128 * 4, 255);
+  for (int y = 0; y < 128; ++y)
+    for (int x = 0; x < 128; ++x) {
+      const auto in = [&](double cx, double cy, double r) { return std::hypot(x + 0.5 - cx, y + 0.5 - cy) < r; };
+      if (in(64, 64, 45) && !in(64, 76, 18)) {
+        uint8_t* p = drawing.at(x, y);
+        p[0] = 230, p[1] = 120, p[2] = 40;
+      }
+    }
+  const std::string dir = test::scratchDirectory("edit-script-paper");
+  writePng(dir + "/belly.png", drawing);
+  std::ofstream(dir + "/scene.json") << R"({"version": 1, "keys": [
+    {"name": "a", "drawing": "belly.png", "holes": [[64, 76]]},
+    {"name": "b", "drawing": "belly.png", "holes": [[64, 76]]}]})";
+  SceneDocument doc = SceneDocument::load(dir + "/scene.json");
+  REQUIRE_FALSE(doc.problem());
+  // 3 px inside the belly, below its top rim (y = 58); the disc's own outline is 39 px away.
+  applyEditScript(doc, readEditOps(R"([{"op": "add_feature", "key": "a", "name": "belly", "at": [64, 61]},
+                                       {"op": "add_feature", "key": "b", "name": "belly", "at": [64, 61]}])", "ops.json"),
+                  "ops.json");
+  CHECK(doc.scene().keys[0].features.at("belly").y() == Approx(58).margin(1.5));
 }

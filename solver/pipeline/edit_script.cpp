@@ -16,22 +16,39 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// The traced outlines of the keys' drawings, by drawing path, traced once.
-class Outlines {
+// The traced outlines of the keys' drawings, by key, traced once each as the mesher traces them
+// (the key's hole points included: meshing/multimesh_builder.cpp). Keys added by the script are
+// drawings without hole points.
+class KeyOutlines {
  public:
-  Outlines(const TracingOptions& tracing) : tracing_(tracing) {}
-  const std::vector<Outline>& of(const std::string& drawing) {
-    auto it = cache_.find(drawing);
-    if (it == cache_.end()) {
-      const RgbaImage image = readPng(drawing);
-      it = cache_.emplace(drawing, traceOutlines(shapeMask(image, tracing_, {}, drawing), tracing_, drawing)).first;
+  explicit KeyOutlines(const Scene& scene) : tracing_(scene.tracing) {
+    for (const KeySpec& key : scene.keys) keys_[key.name] = {key.drawing, key.holes};
+  }
+  void add(const std::string& key, const std::string& drawing) {
+    keys_[key] = {drawing, {}};
+    traced_.erase(key);
+  }
+  void remove(const std::string& key) {
+    keys_.erase(key);
+    traced_.erase(key);
+  }
+  // nullptr for a key the scene does not have.
+  const std::vector<Outline>* of(const std::string& key) {
+    const auto spec = keys_.find(key);
+    if (spec == keys_.end()) return nullptr;
+    auto it = traced_.find(key);
+    if (it == traced_.end()) {
+      const auto& [drawing, holes] = spec->second;
+      const ShapeMask mask = shapeMask(readPng(drawing), tracing_, holes, drawing);
+      it = traced_.emplace(key, traceOutlines(mask, tracing_, drawing)).first;
     }
-    return it->second;
+    return &it->second;
   }
 
  private:
   TracingOptions tracing_;
-  std::map<std::string, std::vector<Outline>> cache_;
+  std::map<std::string, std::pair<std::string, Polyline>> keys_;  // key -> drawing path, hole points
+  std::map<std::string, std::vector<Outline>> traced_;
 };
 
 // The nearest point to p on any loop of `outlines`.
@@ -64,11 +81,8 @@ std::string pointText(const Eigen::Vector2d& p) {
 void applyEditScript(SceneDocument& doc, const std::vector<EditOp>& ops, const std::string& opsFile,
                      const EditScriptOptions& options) {
   if (doc.problem()) throw InputError(*doc.problem() + " (fix the scene before applying " + fs::path(opsFile).filename().string() + ")");
-  const Scene start = doc.scene();
   const fs::path folder = fs::path(doc.path()).parent_path();
-  std::map<std::string, std::string> drawingOf;  // key -> drawing path as the scene resolves it
-  for (const KeySpec& key : start.keys) drawingOf[key.name] = key.drawing;
-  Outlines outlines(start.tracing);
+  KeyOutlines outlines(doc.scene());
   const std::string where = fs::path(opsFile).filename().string();
   for (const EditOp& op : ops) {
     const std::string which = where + ": operation " + std::to_string(op.index) + " (" + op.op + "): ";
@@ -76,12 +90,12 @@ void applyEditScript(SceneDocument& doc, const std::vector<EditOp>& ops, const s
       edit::SceneEdit e = op.edit;
       if (op.snapsToOutline) {
         auto& feature = std::get<edit::SetFeature>(e);
-        const auto drawing = drawingOf.find(feature.key);
-        if (drawing == drawingOf.end()) {
+        const std::vector<Outline>* traced = outlines.of(feature.key);
+        if (!traced) {
           doc.apply(e);  // no such key: the document's message (did you mean)
           continue;
         }
-        const Eigen::Vector2d on = nearestOnOutlines(outlines.of(drawing->second), feature.at);
+        const Eigen::Vector2d on = nearestOnOutlines(*traced, feature.at);
         const double distance = (on - feature.at).norm();
         if (distance > options.snapDistance) {
           char far[64];
@@ -95,8 +109,8 @@ void applyEditScript(SceneDocument& doc, const std::vector<EditOp>& ops, const s
       if (!op.assignment.empty()) doc.setFromText(op.assignment);
       else doc.apply(e);
       if (const auto* added = std::get_if<edit::AddKey>(&op.edit))
-        drawingOf[added->name] = fs::path(added->drawing).is_absolute() ? added->drawing : (folder / added->drawing).string();
-      if (const auto* removed = std::get_if<edit::RemoveKey>(&op.edit)) drawingOf.erase(removed->name);
+        outlines.add(added->name, fs::path(added->drawing).is_absolute() ? added->drawing : (folder / added->drawing).string());
+      if (const auto* removed = std::get_if<edit::RemoveKey>(&op.edit)) outlines.remove(removed->name);
     } catch (const InputError& e) {
       const std::string message = e.what();
       throw InputError(message.rfind(where + ": operation", 0) == 0 ? message : which + message);
@@ -108,7 +122,7 @@ void applyEditScript(SceneDocument& doc, const std::vector<EditOp>& ops, const s
   shape.snapDistance = options.snapDistance;
   for (int k = 0; k < static_cast<int>(scene.keys.size()); ++k) {
     try {
-      buildKeyShape(scene, k, outlines.of(scene.keys[k].drawing), shape);
+      buildKeyShape(scene, k, *outlines.of(scene.keys[k].name), shape);
     } catch (const InputError& e) {
       throw InputError(where + ": after the operations: " + e.what());
     }
