@@ -129,9 +129,10 @@ bool actUntil(const std::function<void()>& act, const std::function<bool()>& don
   return false;
 }
 
-LiveWindow::LiveWindow(const std::string& scene, int width, int height)
+LiveWindow::LiveWindow(const std::string& scene, int width, int height, editor::EditorSession* editor)
     : session(std::make_unique<play::SceneReloader>(scene), {}) {
   play::PlayerWindowOptions options;
+  options.editor = editor;
   options.width = width;
   options.height = height;
   options.validation = true;
@@ -139,7 +140,7 @@ LiveWindow::LiveWindow(const std::string& scene, int width, int height)
   window = std::make_unique<play::PlayerWindow>(session, options);
   REQUIRE(presentUntil(*window, [&] { return session.shown() != nullptr; }, 60));
   REQUIRE(session.worker().waitIdle(60));
-  id = xdotool("search --name \"inbetween play - " + scene + "\" | head -n 1");
+  id = xdotool("search --name \"inbetween (play|edit) - " + scene + "\" | head -n 1");
   REQUIRE_FALSE(id.empty());
   xdotool("windowfocus --sync " + id);
   frames(5);

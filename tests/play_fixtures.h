@@ -14,6 +14,10 @@
 #include <memory>
 #include <string>
 
+namespace ib::editor {
+class EditorSession;
+}  // namespace ib::editor
+
 namespace playtest {
 
 constexpr int kWidth = 960, kHeight = 600;  // the scripted window's size
@@ -67,7 +71,9 @@ struct LiveWindow {
   std::unique_ptr<ib::play::PlayerWindow> window;
   std::string id;  // the X window, for xdotool
 
-  explicit LiveWindow(const std::string& scene, int width = kWidth, int height = kHeight);
+  // With `editor`, the editor's window (`inbetween edit`) over that session's document.
+  explicit LiveWindow(const std::string& scene, int width = kWidth, int height = kHeight,
+                      ib::editor::EditorSession* editor = nullptr);
   ~LiveWindow();
 
   // `count` frames, 20 ms apart: the X events sent before are taken in the first.

@@ -43,7 +43,7 @@ TEST_CASE("cli: inbetween new writes a looping scene of its drawings, one key pe
           "over a file") {
   const fs::path folder = chompDrawings("new");
   const std::string scene = (folder / "scene.json").string();
-  const test::CommandRun run = inbetween({"new", scene, (folder / "closed.png").string(), (folder / "open.png").string()});
+  const test::CommandRun run = inbetween({"new", scene, (folder / "closed.png").string(), (folder / "open.png").string(), "--no-window"});
   INFO(run.output);
   REQUIRE(run.code == 0);
   const ib::Scene loaded = ib::loadScene(scene);
@@ -53,11 +53,11 @@ TEST_CASE("cli: inbetween new writes a looping scene of its drawings, one key pe
   CHECK(loaded.timeline.loops());
   CHECK(loaded.timeline.frameCount() == 48);  // a second per key at 24 fps, back to the first
   const std::string before = ib::readFile(scene);
-  const test::CommandRun again = inbetween({"new", scene, (folder / "closed.png").string(), (folder / "open.png").string()});
+  const test::CommandRun again = inbetween({"new", scene, (folder / "closed.png").string(), (folder / "open.png").string(), "--no-window"});
   CHECK(again.code == 2);
   CHECK(again.err.find("exists already") != std::string::npos);
   CHECK(ib::readFile(scene) == before);
-  const test::CommandRun missing = inbetween({"new", (folder / "other.json").string(), (folder / "closed.png").string(), (folder / "nope.png").string()});
+  const test::CommandRun missing = inbetween({"new", (folder / "other.json").string(), (folder / "closed.png").string(), (folder / "nope.png").string(), "--no-window"});
   CHECK(missing.code == 2);
   CHECK(missing.err.find("nope.png") != std::string::npos);
   CHECK_FALSE(test::exists((folder / "other.json").string()));
@@ -67,7 +67,7 @@ TEST_CASE("cli: edit --apply builds the README's chomp from its drawings: featur
           "a mark, and the scene meshes") {
   const fs::path folder = chompDrawings("edit-chomp");
   const std::string scene = (folder / "scene.json").string();
-  REQUIRE(inbetween({"new", scene, (folder / "closed.png").string(), (folder / "open.png").string()}).code == 0);
+  REQUIRE(inbetween({"new", scene, (folder / "closed.png").string(), (folder / "open.png").string(), "--no-window"}).code == 0);
   write(folder / "ops.json", kChompOps);
   const test::CommandRun run = inbetween({"edit", scene, "--apply", (folder / "ops.json").string()});
   INFO(run.output);
@@ -89,7 +89,7 @@ TEST_CASE("cli: edit --apply builds the README's chomp from its drawings: featur
 TEST_CASE("cli: a bad operation exits 2 with one message naming the operation and its field, and writes nothing") {
   const fs::path folder = chompDrawings("edit-bad");
   const std::string scene = (folder / "scene.json").string();
-  REQUIRE(inbetween({"new", scene, (folder / "closed.png").string(), (folder / "open.png").string()}).code == 0);
+  REQUIRE(inbetween({"new", scene, (folder / "closed.png").string(), (folder / "open.png").string(), "--no-window"}).code == 0);
   const std::string before = ib::readFile(scene);
   const std::vector<std::pair<std::string, std::vector<std::string>>> cases = {
       {R"([{"op": "add_feature", "key": "clsed", "name": "top", "at": [128, 28]}])", {"operation 0", "clsed", "closed"}},

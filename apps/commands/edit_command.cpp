@@ -1,6 +1,7 @@
 #include "commands/edit_command.h"
 
 #include "cli.h"
+#include "commands/play_command.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "pipeline/edit_script.h"
@@ -20,15 +21,22 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr const char* kEditUsage =
-    "usage: inbetween edit SCENE --apply OPS.json [-o OUT.json]\n"
+    "usage: inbetween edit SCENE [window options]\n"
+    "       inbetween edit SCENE --apply OPS.json [-o OUT.json] [--snap PX]\n"
     "\n"
-    "Applies the operations of OPS.json (a JSON array, docs/editor.md) to SCENE and writes it, in\n"
-    "place or to OUT.json, keeping the file's layout. A feature's point snaps onto its key's traced\n"
-    "outline within --snap px. A bad operation, or a scene that would not load or mesh afterwards\n"
-    "(a feature in one key only, a cut leaving the shape), is an error naming the operation and\n"
-    "field: nothing is written.\n"
+    "Opens the editor: the keys side by side above the animation, each with its traced outline.\n"
+    "Place features by clicking on the outlines (the arcs between them take the same colour in every\n"
+    "key), draw cuts, interior features and painted stiffness; the animation rebuilds after every\n"
+    "edit. Ctrl+Z / Ctrl+Shift+Z undo and redo, Ctrl+S saves (docs/editor.md). The window takes\n"
+    "`inbetween play`'s options (--size, --validation, --frames N --screenshot PATH, ...).\n"
     "\n"
-    "  --apply OPS.json   the operations (required: the editor window is not built yet)\n"
+    "With --apply, applies the operations of OPS.json (a JSON array, docs/editor.md) to SCENE and\n"
+    "writes it, in place or to OUT.json, keeping the file's layout, without a window. A feature's\n"
+    "point snaps onto its key's traced outline within --snap px. A bad operation, or a scene that\n"
+    "would not load or mesh afterwards (a feature in one key only, a cut leaving the shape), is an\n"
+    "error naming the operation and field: nothing is written.\n"
+    "\n"
+    "  --apply OPS.json   the operations\n"
     "  -o, --output OUT   write the scene here (drawing paths rewritten to resolve from its folder)\n"
     "  --snap PX          how far from the outline a feature may be placed (default 8)\n";
 
@@ -37,9 +45,11 @@ constexpr const char* kNewUsage =
     "\n"
     "Writes a scene with one key per drawing, in that order, each named after its file without the\n"
     "extension, and a timeline that holds each key for a second and loops; no features or cuts yet\n"
-    "(add them with `inbetween edit SCENE --apply OPS.json`). SCENE.json must not exist.\n"
+    "(add them in the editor, which opens on the new scene, or with `inbetween edit SCENE --apply\n"
+    "OPS.json`). SCENE.json must not exist.\n"
     "\n"
-    "  --fps N   the timeline's frames per second (default 24)\n";
+    "  --fps N       the timeline's frames per second (default 24)\n"
+    "  --no-window   only write the scene\n";
 
 // A number as the scene files write it: whole numbers without a fraction.
 nlohmann::ordered_json number(double value) {
@@ -63,10 +73,10 @@ std::string textFor(const SceneDocument& doc, const std::string& out) {
 
 int runEdit(const std::vector<std::string>& args) {
   if (cli::printHelpIfAsked(args, kEditUsage)) return 0;
+  if (std::none_of(args.begin(), args.end(), [](const std::string& a) { return a.rfind("--apply", 0) == 0; }))
+    return runPlayerWindow(args, true);
   const cli::Arguments arguments("edit", cli::expandShortOutput(args), {"apply", "output", "snap"}, {});
   if (arguments.positional().size() != 1) throw InputError("edit: expected one SCENE (see `inbetween edit --help`)");
-  if (!arguments.has("apply"))
-    throw InputError("edit: give the operations with --apply OPS.json (the editor window is not built yet; see `inbetween edit --help`)");
   const std::string scene = arguments.positional()[0], opsFile = arguments.value("apply", "");
   EditScriptOptions options;
   if (arguments.has("snap")) options.snapDistance = cli::positiveNumber(arguments.value("snap", ""), "--snap", 1000, "a distance in drawing pixels");
@@ -81,7 +91,7 @@ int runEdit(const std::vector<std::string>& args) {
 
 int runNew(const std::vector<std::string>& args) {
   if (cli::printHelpIfAsked(args, kNewUsage)) return 0;
-  const cli::Arguments arguments("new", args, {"fps"}, {});
+  const cli::Arguments arguments("new", args, {"fps"}, {"no-window"});
   const std::vector<std::string>& words = arguments.positional();
   if (words.size() < 3) throw InputError("new: expected SCENE.json and at least two drawings (see `inbetween new --help`)");
   const std::string scene = words[0];
@@ -110,7 +120,9 @@ int runNew(const std::vector<std::string>& args) {
   std::printf("wrote %s: %zu keys (%s", scene.c_str(), names.size(), names.front().c_str());
   for (size_t i = 1; i < names.size(); ++i) std::printf(", %s", names[i].c_str());
   std::printf("), a %zu s loop at %g fps\n", names.size(), fps);
-  return 0;
+  std::fflush(stdout);
+  if (arguments.flag("no-window")) return 0;
+  return runPlayerWindow({scene}, true);
 }
 
 }  // namespace ib

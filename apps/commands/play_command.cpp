@@ -4,6 +4,8 @@
 #include "commands/render_options.h"
 #include "commands/scene_overrides.h"
 #include "core/error.h"
+#include "editor/editor_session.h"
+#include "editor/editor_view.h"
 #include "gpu/vulkan_check.h"
 #include "playback/scene_parameters.h"
 #include "player/player_window.h"
@@ -113,11 +115,24 @@ void runScripted(play::PlayerSession& session, play::PlayerWindow& window, int f
 
 int runPlay(const std::vector<std::string>& rawArgs) {
   if (cli::printHelpIfAsked(rawArgs, kUsage)) return 0;
-  const cli::SplitSets split = cli::takeSets(rawArgs, "play");
-  const cli::Arguments arguments("play", split.rest, {"frames", "screenshot", "weights", "size", "samples", "sampling", "device", "threads"},
+  return runPlayerWindow(rawArgs, false);
+}
+
+int runPlayerWindow(const std::vector<std::string>& rawArgs, bool edit) {
+  const char* const command = edit ? "edit" : "play";
+  const cli::SplitSets split = cli::takeSets(rawArgs, command);
+  const cli::Arguments arguments(command, split.rest, {"frames", "screenshot", "weights", "size", "samples", "sampling", "device", "threads"},
                                  {"validation", "no-vsync", "save"});
-  if (arguments.positional().size() != 1) throw InputError("play: needs exactly one SCENE file (see `inbetween play --help`)");
+  if (arguments.positional().size() != 1)
+    throw InputError(std::string(command) + ": needs exactly one SCENE file (see `inbetween " + command + " --help`)");
   const std::string scenePath = arguments.positional()[0];
+  // The editor's document: read first, so a scene that does not load is the usual message.
+  std::unique_ptr<editor::EditorSession> editing;
+  if (edit) {
+    SceneDocument document = SceneDocument::load(scenePath);
+    if (document.problem()) throw InputError(*document.problem());
+    editing = std::make_unique<editor::EditorSession>(std::move(document));
+  }
   const int frames = arguments.integer("frames", 0, 1, 1000000);
   const std::string screenshot = arguments.value("screenshot", "");
   if (!screenshot.empty() && !arguments.has("frames")) throw InputError("play: --screenshot needs --frames N (a scripted run)");
@@ -163,6 +178,7 @@ int runPlay(const std::vector<std::string>& rawArgs) {
     session.setWeights(parseWeights(arguments.value("weights", ""), session.keyNames()));
     session.setWeightsMode(true);
   }
+  windowOptions.editor = editing.get();
   const std::unique_ptr<play::PlayerWindow> window = openWindow(session, windowOptions);
   if (frames > 0) {
     runScripted(session, *window, frames, screenshot);

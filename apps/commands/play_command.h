@@ -8,5 +8,8 @@
 namespace ib {
 
 int runPlay(const std::vector<std::string>& args);
+// The player's window over SCENE with play's options (after `--help` was handled); `edit` adds
+// the editor (`inbetween edit SCENE`).
+int runPlayerWindow(const std::vector<std::string>& args, bool edit);
 
 }  // namespace ib

@@ -106,9 +106,9 @@ std::shared_ptr<const Multimesh> initialBeside(const Scene& scene) {
   }
 }
 
-LoadedScene built(Scene scene, const PipelineProgress& progress) {
+LoadedScene built(Scene scene, const SceneMultimeshOptions& options, const PipelineProgress& progress) {
   LoadedScene out;
-  SceneMultimesh mesh = sceneMultimesh(scene, SceneMultimeshOptions{}, progress);
+  SceneMultimesh mesh = sceneMultimesh(scene, options, progress);
   out.mesh = mesh.multimesh;
   out.initial = mesh.initial ? mesh.initial : initialBeside(scene);
   out.drawings = readKeyDrawings(scene);
@@ -122,24 +122,39 @@ struct Loaded {
   std::shared_ptr<const LoadedScene> scene;
   std::string meshFields;              // meshFields() of its scene file
   std::vector<FileStamp> meshStamps;   // its meshFiles() as of before the build
+  bool optimized = true;               // its multimesh went through Comesh (or came from a file)
 };
 
-// Loads `path`, keeping `last`'s multimesh, drawings and features when only fields that do not
-// shape the mesh changed and its drawings and stiffness image did not (null `last`: none).
-Loaded load(const std::string& path, const Loaded* last, const PipelineProgress& progress) {
+// What a build loads: a scene file, or an editor's text for it (never from the cache, which is
+// of the file), with Comesh Optimization or without (the initial map: a fraction of the time).
+struct Job {
+  std::string path;
+  std::optional<std::string> text;
+  bool comesh = true;
+};
+
+// Loads the job's scene, keeping `last`'s multimesh, drawings and features when only fields that
+// do not shape the mesh changed and its drawings and stiffness image did not (null `last`: none).
+Loaded load(const Job& job, const Loaded* last, const PipelineProgress& progress) {
   std::error_code error;
-  if (fs::is_directory(path, error)) loadScene(path);  // throws, naming the scene file inside
-  const std::string text = readFile(path);
-  Scene scene = parseScene(text, path);
+  if (!job.text && fs::is_directory(job.path, error)) loadScene(job.path);  // throws, naming the scene file inside
+  const std::string text = job.text ? *job.text : readFile(job.path);
+  Scene scene = parseScene(text, job.path);
   Loaded out;
   out.meshFields = meshFields(text);
   out.meshStamps = stampAll(meshFiles(scene));
-  if (last && last->scene && last->meshFields == out.meshFields && last->meshStamps == out.meshStamps) {
+  if (last && last->scene && last->meshFields == out.meshFields && last->meshStamps == out.meshStamps &&
+      (last->optimized || !job.comesh)) {
     LoadedScene kept = *last->scene;
     kept.scene = std::move(scene);
     out.scene = std::make_shared<const LoadedScene>(std::move(kept));
+    out.optimized = last->optimized;
   } else {
-    out.scene = std::make_shared<const LoadedScene>(built(std::move(scene), progress));
+    SceneMultimeshOptions options;
+    options.useCache = !job.text;
+    options.comesh = job.comesh;
+    out.scene = std::make_shared<const LoadedScene>(built(std::move(scene), options, progress));
+    out.optimized = job.comesh;
   }
   return out;
 }
@@ -147,7 +162,7 @@ Loaded load(const std::string& path, const Loaded* last, const PipelineProgress&
 }  // namespace
 
 LoadedScene loadPlayerScene(const std::string& scenePath, const PipelineProgress& progress) {
-  return built(loadScene(scenePath), progress);
+  return built(loadScene(scenePath), SceneMultimeshOptions{}, progress);
 }
 
 struct SceneReloader::State {
@@ -165,7 +180,7 @@ struct SceneReloader::State {
   std::string buildingPath;               // the running build's scene file
   bool running = false;
   bool queued = false;                    // another build after the running one
-  std::string queuedPath;
+  Job queuedJob;
   bool stopping = false;                  // the destructor waits: no queued build starts
   std::shared_ptr<const LoadedScene> finished;  // a good build not yet taken
   std::string finishedPath;
@@ -173,30 +188,31 @@ struct SceneReloader::State {
   double progress = 1;
   std::string stage;
 
-  void start(const std::string& path);
-  void run(std::string path);
+  void start(Job job);
+  void run(Job job);
   bool changed() const;
 };
 
-void SceneReloader::State::start(const std::string& path) {
+void SceneReloader::State::start(Job job) {
   {
     std::lock_guard<std::mutex> lock(mutex);
     if (running) {
       queued = true;
-      queuedPath = path;
+      queuedJob = std::move(job);
       return;
     }
     running = true;
-    buildingPath = path;
+    buildingPath = job.path;
     progress = 0;
     stage = "loading";
   }
   if (thread.joinable()) thread.join();  // finished: it cleared `running`
-  thread = std::thread([this, path] { run(path); });
+  thread = std::thread([this, job] { run(job); });
 }
 
-void SceneReloader::State::run(std::string path) {
+void SceneReloader::State::run(Job job) {
   for (;;) {
+    const std::string path = job.path;
     std::vector<std::string> files;
     Loaded last;
     {
@@ -213,7 +229,7 @@ void SceneReloader::State::run(std::string path) {
     std::optional<Loaded> result;
     std::string message;
     try {
-      result = load(path, &last, [this](const std::string& what, double fraction) {
+      result = load(job, &last, [this](const std::string& what, double fraction) {
         std::lock_guard<std::mutex> lock(mutex);
         stage = what;
         progress = fraction;
@@ -243,7 +259,7 @@ void SceneReloader::State::run(std::string path) {
     }
     if (queued && !stopping) {
       queued = false;
-      path = queuedPath;
+      job = std::move(queuedJob);
       progress = 0;
       stage = "loading";
       continue;
@@ -269,7 +285,7 @@ bool SceneReloader::State::changed() const {
 SceneReloader::SceneReloader(const std::string& scenePath, const PipelineProgress& progress)
     : state_(std::make_unique<State>()) {
   const FileStamp before = stamp(scenePath);
-  state_->lastGood = load(scenePath, nullptr, progress);
+  state_->lastGood = load(Job{scenePath, std::nullopt, true}, nullptr, progress);
   state_->current = state_->lastGood.scene;
   state_->currentPath = scenePath;
   state_->watchedPath = scenePath;
@@ -297,7 +313,7 @@ void SceneReloader::poll() {
     if (state_->running && (state_->queued || state_->buildingPath != state_->watchedPath)) return;
     watched = state_->watchedPath;
   }
-  if (state_->changed()) state_->start(watched);  // queued behind a running build
+  if (state_->changed()) state_->start(Job{watched, std::nullopt, true});  // queued behind a running build
 }
 
 void SceneReloader::reloadNow() {
@@ -306,10 +322,19 @@ void SceneReloader::reloadNow() {
     std::lock_guard<std::mutex> lock(state_->mutex);
     watched = state_->watchedPath;
   }
-  state_->start(watched);
+  state_->start(Job{watched, std::nullopt, true});
 }
 
-void SceneReloader::open(const std::string& scenePath) { state_->start(scenePath); }
+void SceneReloader::open(const std::string& scenePath) { state_->start(Job{scenePath, std::nullopt, true}); }
+
+void SceneReloader::rebuildFromText(const std::string& text, bool comesh) {
+  std::string watched;
+  {
+    std::lock_guard<std::mutex> lock(state_->mutex);
+    watched = state_->watchedPath;
+  }
+  state_->start(Job{watched, text, comesh});
+}
 
 bool SceneReloader::takeReloaded() {
   std::lock_guard<std::mutex> lock(state_->mutex);

@@ -18,7 +18,7 @@ bool KeyQueue::record(const KeyEvent& event) {
     return false;
   }
   if (event.action == GLFW_PRESS) pressedThisFrame_.push_back(event.key);
-  if (presses_.size() < kCapacity) presses_.push_back({event.key, (event.mods & GLFW_MOD_CONTROL) != 0});
+  if (presses_.size() < kCapacity) presses_.push_back({event.key, (event.mods & GLFW_MOD_CONTROL) != 0, (event.mods & GLFW_MOD_SHIFT) != 0});
   return true;
 }
 

@@ -13,6 +13,7 @@ namespace ib::play {
 struct KeyPress {
   int key = 0;        // GLFW key code
   bool ctrl = false;  // Ctrl was held when it went down
+  bool shift = false; // Shift was held when it went down
 };
 
 // One GLFW key event, as the key callback gets it.

@@ -9,6 +9,7 @@
 
 #include <array>
 #include <deque>
+#include <functional>
 #include <string>
 
 namespace ib::play {
@@ -42,6 +43,7 @@ struct UiState {
   std::string screenshotPath;  // where F12 writes; empty: inbetween-NNNN.png in the current folder
   int screenshots = 0;
   std::array<char, 64> typedValue{};  // a parameter's value being typed (the parameters panel's popup)
+  std::function<void()> editPanel;  // edit mode: the Edit tab's contents (editor/editor_view.h); else empty
 };
 
 // The layout: a side panel on the right, the transport bar along the bottom.

@@ -1,6 +1,7 @@
 #include "player/player_window.h"
 
 #include "core/error.h"
+#include "editor/editor_view.h"
 #include "pipeline/artwork_sampling.h"
 #include "player/shortcuts.h"
 #include "gpu/vulkan_check.h"
@@ -52,6 +53,31 @@ PlayerWindow::PlayerWindow(PlayerSession& session, const PlayerWindowOptions& op
   last_ = std::chrono::steady_clock::now();
   samplingOverride_ = options.sampling;
   applySceneSampling(true);
+  if (options.editor) {
+    editor_ = std::make_unique<editor::EditorView>(*options.editor, session);
+    ui_.editPanel = [this] { editor_->panel(); };
+    sheetPool_ = vk::createCommandPool(presenter_->context());
+    presenter_->window().setTitle(editor_->title());
+  }
+}
+
+void PlayerWindow::updateSheet() {
+  if (!editor_ || editor_->drawingsGeneration() == sheetGeneration_) return;
+  presenter_->waitIdle();  // the old sheet's texture may be in a frame in flight
+  sheet_.reset();
+  const render::OverlayTarget target = presenter_->overlayTarget();
+  try {
+    sheet_ = std::make_unique<render::DrawingSheet>(presenter_->context(), sheetPool_.get(), editor_->drawings(), target.renderPass,
+                                                     target.samples);
+  } catch (const vk::VulkanError& e) {
+    session_.messages().push_back({std::string("cannot show the drawings: ") + e.what(), true});
+  }
+  sheetGeneration_ = editor_->drawingsGeneration();
+}
+
+bool PlayerWindow::closing() {
+  if (!editor_ || closeConfirmed_) return true;
+  return editor_->mayClose();
 }
 
 void PlayerWindow::applySceneSampling(bool force) {
@@ -62,6 +88,7 @@ void PlayerWindow::applySceneSampling(bool force) {
 }
 
 PlayerWindow::~PlayerWindow() {
+  editor_.reset();
   glfwSetDropCallback(presenter_->window().get(), nullptr);
   glfwSetKeyCallback(presenter_->window().get(), previousKey_);  // ImGui's again, for its shutdown
   // The UI's buffers and pipeline go before the presenter's device, once no frame uses them.
@@ -70,10 +97,12 @@ PlayerWindow::~PlayerWindow() {
   } catch (const vk::VulkanError&) {  // a lost device runs nothing any more: destroying is safe
   }
   imgui_.reset();
+  sheet_.reset();
 }
 
 void PlayerWindow::dropped(const std::vector<std::string>& paths) {
-  if (!paths.empty()) dropped_.push_back(paths.front());
+  if (editor_) dropped_.insert(dropped_.end(), paths.begin(), paths.end());  // drawings: new keys
+  else if (!paths.empty()) dropped_.push_back(paths.front());
 }
 
 void PlayerWindow::keyEvent(GLFWwindow* window, int key, int scancode, int action, int mods) {
@@ -101,16 +130,22 @@ void PlayerWindow::handleInput(const render::ViewBox& content) {
   // Shortcuts unless a text field has the keyboard (its keys are text, and dropped here): every
   // press since the last frame in order, however short, repeating at the system's key repeat.
   for (const KeyPress& press : keys_.take())
-    if (!io.WantTextInput) applyShortcut(press.key, press.ctrl, session_, ui_);
-  if (ui_.closeRequested) glfwSetWindowShouldClose(presenter_->window().get(), GLFW_TRUE);
-  if (io.WantCaptureMouse || !ui_.canvas.contains(io.MousePos.x, io.MousePos.y)) return;
+    if (!io.WantTextInput && !(editor_ && editor_->shortcut(press.key, press.ctrl, press.shift)))
+      applyShortcut(press.key, press.ctrl, session_, ui_);
+  if (ui_.closeRequested) {
+    ui_.closeRequested = false;
+    if (closing()) glfwSetWindowShouldClose(presenter_->window().get(), GLFW_TRUE);
+  }
+  if (editor_ && editor_->input()) return;  // the pointer is over a key: the editor's
+  const PixelRect& picture = ui_.canvas;
+  if (io.WantCaptureMouse || !picture.contains(io.MousePos.x, io.MousePos.y)) return;
   if (io.MouseWheel != 0)
-    ui_.navigation.zoomAt(std::pow(1.15, io.MouseWheel), io.MousePos.x, io.MousePos.y, content, ui_.canvas, ui_.width,
+    ui_.navigation.zoomAt(std::pow(1.15, io.MouseWheel), io.MousePos.x, io.MousePos.y, content, picture, ui_.width,
                           ui_.height);
   // The picture follows the pointer while a button is held. Not on the frame the button goes
   // down: the pointer's move since the last frame came before the press (a click would jump).
   if (heldSinceLastFrame(ImGuiMouseButton_Left) || heldSinceLastFrame(ImGuiMouseButton_Middle))
-    ui_.navigation.drag(io.MouseDelta.x, io.MouseDelta.y, content, ui_.canvas, ui_.width, ui_.height);
+    ui_.navigation.drag(io.MouseDelta.x, io.MouseDelta.y, content, picture, ui_.width, ui_.height);
 }
 
 void PlayerWindow::panels() {
@@ -118,6 +153,13 @@ void PlayerWindow::panels() {
   transportPanel(session_, ui_);
   readoutsPanel(session_, ui_);
   messageBanner(session_, ui_);
+  if (editor_) {
+    editor_->marks();
+    if (editor_->closeDialog()) {
+      closeConfirmed_ = true;
+      glfwSetWindowShouldClose(presenter_->window().get(), GLFW_TRUE);
+    }
+  }
 }
 
 bool PlayerWindow::frame(RgbaImage* capture) {
@@ -125,10 +167,13 @@ bool PlayerWindow::frame(RgbaImage* capture) {
   for (const KeyEvent& e : keys_.nextFrame())
     if (previousKey_) previousKey_(presenter_->window().get(), e.key, e.scancode, e.action, e.mods);
   vk::pollWindowEvents();
+  if (presenter_->window().shouldClose() && !closing())  // the close button with unsaved edits: ask first
+    glfwSetWindowShouldClose(presenter_->window().get(), GLFW_FALSE);
   const auto now = std::chrono::steady_clock::now();
   const double seconds = std::chrono::duration<double>(now - last_).count();
   last_ = now;
-  for (const std::string& path : dropped_) {
+  if (editor_ && !dropped_.empty()) editor_->dropped(dropped_);
+  for (const std::string& path : editor_ ? std::vector<std::string>{} : dropped_) {
     try {
       session_.reloader().open(path);
       session_.messages().push_back({"opening " + path, false});
@@ -137,16 +182,27 @@ bool PlayerWindow::frame(RgbaImage* capture) {
     }
   }
   dropped_.clear();
+  if (editor_) editor_->update();
+  bool newMesh = false;
   if (session_.update(seconds)) {
     presenter_->setMesh(session_.renderMesh());
     applySceneSampling(false);
-    presenter_->window().setTitle("inbetween play - " + session_.scenePath());
+    newMesh = true;
+    if (!editor_) presenter_->window().setTitle("inbetween play - " + session_.scenePath());
+  }
+  if (editor_) {
+    if (editor_->title() != title_) presenter_->window().setTitle(title_ = editor_->title());
+    updateSheet();
   }
 
   const VkExtent2D size = presenter_->window().framebufferSize();
   ui_.width = static_cast<int>(std::max(1u, size.width));
   ui_.height = static_cast<int>(std::max(1u, size.height));
   ui_.canvas = canvasRect(ui_.width, ui_.height);
+  if (editor_) {  // the keys above; the animation, its readouts and messages below them
+    editor_->layout(ui_.canvas, ui_.width, ui_.height);
+    ui_.canvas = editor_->preview();
+  }
   const render::ViewBox content = contentBox();
   // ImGui sizes auto-fitted windows and tab bars from the frame before: the first frame is laid
   // out twice without being drawn, so even a one-frame screenshot shows every panel.
@@ -162,7 +218,8 @@ bool PlayerWindow::frame(RgbaImage* capture) {
 
   // What to draw: the shown frame, with its solved neighbours as onion skins on the timeline.
   const std::shared_ptr<const AnimationFrame> shown = session_.shown();
-  const render::ViewBox view = ui_.navigation.windowView(content, ui_.canvas, ui_.width, ui_.height);
+  const render::ViewBox view =
+      ui_.navigation.windowView(content, ui_.canvas, ui_.width, ui_.height);
   std::deque<AnimationFrame> window;
   size_t at = 0;
   render::FrameDraw draw;
@@ -183,10 +240,23 @@ bool PlayerWindow::frame(RgbaImage* capture) {
   }
   draw.sampling = ui_.view.sampling;
   presenter_->setBackdrop(ui_.view.backdrop);
-  const render::Overlay overlay = imgui_->endFrame();
+  render::Overlay overlay = imgui_->endFrame();
+  if (editor_ && sheet_) {  // the keys over the animation's upper part, the UI over both
+    const std::vector<render::SheetView> views = editor_->sheetViews();
+    const VkExtent2D extent = presenter_->extent();
+    const render::Sampling sampling = ui_.view.sampling;
+    overlay = [this, views, extent, sampling, ui = std::move(overlay)](VkCommandBuffer cmd) {
+      sheet_->record(cmd, extent, views, sampling);
+      if (ui) ui(cmd);
+    };
+  }
   RgbaImage shot;
   const bool wantShot = ui_.screenshotRequested && presenter_->canCapture();
   const bool presented = presenter_->present(draw, overlay, capture ? capture : wantShot ? &shot : nullptr);
+  if (presented && editor_ && (newMesh || meshPending_)) {
+    meshPending_ = !(shown && shown->x.rows() == session_.renderMesh().vertexCount);
+    if (!meshPending_) editor_->newMeshPresented();
+  }
   if (presented && wantShot) {
     ui_.screenshotRequested = false;
     writeScreenshot(capture ? *capture : shot);

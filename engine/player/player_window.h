@@ -8,6 +8,8 @@
 #include "player/key_queue.h"
 #include "player/player_session.h"
 #include "player/player_ui.h"
+#include "gpu/gpu_resources.h"
+#include "renderers/drawing_sheet.h"
 #include "renderers/window_presenter.h"
 
 #include <chrono>
@@ -17,6 +19,11 @@
 #include <vector>
 
 struct GLFWwindow;
+
+namespace ib::editor {
+class EditorSession;
+class EditorView;
+}  // namespace ib::editor
 
 namespace ib::play {
 
@@ -31,6 +38,9 @@ struct PlayerWindowOptions {
   // The artwork's filtering at the start and after every reload (the View panel can change it):
   // this when given (--sampling), else the scene's "sampling" (pipeline/artwork_sampling.h).
   std::optional<render::Sampling> sampling;
+  // The editor (`inbetween edit`): its keys above the animation, its Edit tab, its shortcuts; the
+  // session must outlive the window. Default null: the player alone.
+  editor::EditorSession* editor = nullptr;
 };
 
 class PlayerWindow {
@@ -49,6 +59,8 @@ class PlayerWindow {
   void run();  // frames until the window is closed (Esc or the window's close button)
 
   UiState& ui() { return ui_; }
+  // The editor's view when editing, else null.
+  editor::EditorView* editor() { return editor_.get(); }
   const vk::VulkanContext& context() const { return presenter_->context(); }
   // Called by GLFW's drop callback: the first dropped file opens (in the next frame).
   void dropped(const std::vector<std::string>& paths);
@@ -65,6 +77,9 @@ class PlayerWindow {
   // The View panel's sampling from the override or the scene, when the scene's choice is new (a
   // reload that keeps it keeps what the user set in the panel).
   void applySceneSampling(bool force);
+  // Edit mode: the drawing sheet of the editor's current drawings (made again when they change).
+  void updateSheet();
+  bool closing();  // the window's close was asked for and may go ahead (the editor asks to save first)
 
   PlayerSession& session_;
   std::unique_ptr<render::WindowPresenter> presenter_;
@@ -78,6 +93,13 @@ class PlayerWindow {
   int laidOutFrames_ = 0;  // frames presented or skipped so far
   std::optional<render::Sampling> samplingOverride_;  // PlayerWindowOptions::sampling
   bool sceneNearest_ = false;                        // the scene's sampling last applied: nearest
+  std::unique_ptr<editor::EditorView> editor_;       // edit mode
+  vk::CommandPoolObject sheetPool_;                  // uploads of the drawing sheet
+  std::unique_ptr<render::DrawingSheet> sheet_;
+  int sheetGeneration_ = -1;                         // the editor's drawings the sheet holds
+  bool closeConfirmed_ = false;                      // the editor's unsaved-changes dialog said close
+  bool meshPending_ = false;                         // a new multimesh arrived, no frame of it shown yet
+  std::string title_;                                // the window's title as last set (edit mode)
 };
 
 }  // namespace ib::play

@@ -59,6 +59,14 @@ const std::vector<ShortcutHelp>& shortcutHelp() {
       {"F12", "screenshot (PNG, UI included)"},
       {"Esc", "close the player"},
       {"drop a file", "open that scene.json"},
+      {"edit: Q / C / D / B", "tool: features / cut / interior / stiffness"},
+      {"edit: click, drag", "place a feature on the outline, move it along"},
+      {"edit: Enter / Esc", "end / cancel the cut being drawn"},
+      {"edit: Delete", "remove the selected feature (Shift: in every key)"},
+      {"edit: right drag / wheel", "pan / zoom the key under the pointer"},
+      {"edit: Ctrl+Z / Ctrl+Shift+Z", "undo / redo"},
+      {"edit: Ctrl+S", "save the scene"},
+      {"edit: drop PNGs", "add them as keys"},
   };
   return help;
 }

@@ -82,6 +82,10 @@ void sidePanel(PlayerSession& session, UiState& ui) {
   const bool showWeights = session.weightsMode() && !ui.weightsModeShown;
   ui.weightsModeShown = session.weightsMode();
   if (ImGui::BeginTabBar("tabs")) {
+    if (ui.editPanel && ImGui::BeginTabItem("Edit")) {
+      ui.editPanel();
+      ImGui::EndTabItem();
+    }
     if (ImGui::BeginTabItem("Parameters")) {
       parametersPanel(session, ui);
       ImGui::EndTabItem();

@@ -11,6 +11,8 @@
 #include <artwork8_vert.h>
 #include <overlay_frag.h>
 #include <overlay_vert.h>
+#include <sheet_frag.h>
+#include <sheet_vert.h>
 
 #include <array>
 #include <cstddef>
@@ -20,7 +22,8 @@ namespace ib::vk {
 
 namespace {
 
-DescriptorSetLayoutObject createSetLayout(VkDevice device) {
+// The artwork's set: {0: sampler2DArray, fragment stage} and, with `uvs`, {1: storage buffer, vertex stage}.
+DescriptorSetLayoutObject createSetLayout(VkDevice device, bool uvs = true) {
   std::array<VkDescriptorSetLayoutBinding, 2> bindings{};
   bindings[0].binding = 0;
   bindings[0].descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
@@ -32,7 +35,7 @@ DescriptorSetLayoutObject createSetLayout(VkDevice device) {
   bindings[1].stageFlags = VK_SHADER_STAGE_VERTEX_BIT;
   VkDescriptorSetLayoutCreateInfo info{};
   info.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO;
-  info.bindingCount = static_cast<uint32_t>(bindings.size());
+  info.bindingCount = uvs ? 2 : 1;
   info.pBindings = bindings.data();
   VkDescriptorSetLayout layout = VK_NULL_HANDLE;
   check(vkCreateDescriptorSetLayout(device, &info, nullptr, &layout), "creating the artwork descriptor set layout");
@@ -79,7 +82,7 @@ PipelineObject createPipeline(VkDevice device, VkRenderPass pass, VkSampleCountF
   VkVertexInputBindingDescription binding{0, spec.stride, VK_VERTEX_INPUT_RATE_VERTEX};
   VkPipelineVertexInputStateCreateInfo input{};
   input.sType = VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO;
-  input.vertexBindingDescriptionCount = 1;
+  input.vertexBindingDescriptionCount = spec.attributes.empty() ? 0 : 1;  // none: positions from gl_VertexIndex
   input.pVertexBindingDescriptions = &binding;
   input.vertexAttributeDescriptionCount = static_cast<uint32_t>(spec.attributes.size());
   input.pVertexAttributeDescriptions = spec.attributes.data();
@@ -168,6 +171,17 @@ RendererPipelines createRendererPipelines(VkDevice device, VkRenderPass pass, Vk
   overlay.name = "overlay triangles";
   overlay.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
   out.overlayTriangles = createPipeline(device, pass, samples, out.overlayLayout.get(), overlay);
+  return out;
+}
+
+SheetPipeline createSheetPipeline(VkDevice device, VkRenderPass pass, VkSampleCountFlagBits samples) {
+  SheetPipeline out;
+  out.setLayout = createSetLayout(device, false);
+  const VkDescriptorSetLayout set = out.setLayout.get();
+  out.layout = createLayout(device, &set, sizeof(SheetPush), VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT);
+  const PipelineSpec sheet{sheet_vert, sizeof(sheet_vert), sheet_frag, sizeof(sheet_frag), "drawing sheet",
+                           VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST, {}, 0};
+  out.pipeline = createPipeline(device, pass, samples, out.layout.get(), sheet);
   return out;
 }
 

@@ -4,6 +4,8 @@
 //   {0: the artwork's sampler2DArray, 1: the per-key UVs storage buffer}, push constants ArtworkPush;
 // - overlay lines and overlay triangles: vertex binding 0 = vec2 position + vec4 premultiplied colour
 //   (24 bytes), push constants {vec4 view}.
+// - the drawing sheet (the editor's keys): no vertex input, descriptor set 0 = {0: the artwork's
+//   sampler2DArray}, push constants SheetPush.
 // All blend premultiplied colour over the target (ONE, ONE_MINUS_SRC_ALPHA), without culling or
 // depth, with dynamic viewport and scissor.
 #pragma once
@@ -52,5 +54,23 @@ struct RendererPipelines {
 int artworkVariant(int activeKeys);
 
 RendererPipelines createRendererPipelines(VkDevice device, VkRenderPass pass, VkSampleCountFlagBits samples);
+
+// Matches the push_constant block in shaders/sheet_push.glsl (std430, 64 bytes).
+struct SheetPush {
+  float clipRect[4];  // x0, y0, x1, y1 in clip space
+  float uvRect[4];    // u0, v0, u1, v1 of the layer
+  float colour[4];    // premultiplied tint, or the fill for layer < 0
+  int layer;          // artwork layer, -1: a plain fill
+  int padding[3];
+};
+static_assert(sizeof(SheetPush) == 64, "SheetPush must match shaders/sheet_push.glsl");
+
+struct SheetPipeline {
+  DescriptorSetLayoutObject setLayout;
+  PipelineLayoutObject layout;
+  PipelineObject pipeline;
+};
+
+SheetPipeline createSheetPipeline(VkDevice device, VkRenderPass pass, VkSampleCountFlagBits samples);
 
 }  // namespace ib::vk

@@ -1,0 +1,141 @@
+// EditorView::marks: what is drawn over each key's drawing, on ImGui's background draw list
+// (after the drawing sheet, before the panels), clipped to the key's view.
+#include "editor/editor_view.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace ib::editor {
+
+namespace {
+
+// Arc colours: distinct hues, readable on light and dark drawings (with a dark under-stroke).
+constexpr ImU32 kPalette[] = {IM_COL32(230, 25, 75, 255),  IM_COL32(60, 180, 75, 255),  IM_COL32(0, 130, 200, 255),
+                              IM_COL32(245, 130, 48, 255), IM_COL32(145, 30, 180, 255), IM_COL32(70, 200, 200, 255),
+                              IM_COL32(240, 50, 230, 255), IM_COL32(170, 110, 40, 255), IM_COL32(128, 128, 0, 255),
+                              IM_COL32(0, 0, 128, 255)};
+constexpr ImU32 kPlainOutline = IM_COL32(90, 90, 100, 255);
+constexpr ImU32 kWrongOrder = IM_COL32(255, 0, 0, 255);
+constexpr ImU32 kFeature = IM_COL32(255, 255, 255, 255);
+constexpr ImU32 kSelected = IM_COL32(255, 210, 0, 255);
+constexpr ImU32 kCut = IM_COL32(255, 120, 0, 255);
+constexpr ImU32 kInterior = IM_COL32(0, 200, 255, 255);
+constexpr ImU32 kShadow = IM_COL32(0, 0, 0, 160);
+
+ImVec2 im(const Eigen::Vector2d& p) { return ImVec2(static_cast<float>(p.x()), static_cast<float>(p.y())); }
+
+void label(ImDrawList* draw, const ImVec2& at, const std::string& text, ImU32 colour) {
+  const ImVec2 size = ImGui::CalcTextSize(text.c_str());
+  draw->AddRectFilled(ImVec2(at.x - 2, at.y - 1), ImVec2(at.x + size.x + 2, at.y + size.y + 1), IM_COL32(0, 0, 0, 170), 3);
+  draw->AddText(at, colour, text.c_str());
+}
+
+// A stiffness stroke's colour: blue where it softens (kappa < 1), red where it stiffens.
+ImU32 kappaColour(double kappa, int alpha) {
+  const double t = std::clamp(0.5 + 0.5 * std::log10(kappa) / std::log10(10.0), 0.0, 1.0);
+  return IM_COL32(static_cast<int>(255 * t), 60, static_cast<int>(255 * (1 - t)), alpha);
+}
+
+}  // namespace
+
+void EditorView::marks() {
+  for (int k = 0; k < static_cast<int>(views_.size()); ++k) keyMarks(k);
+}
+
+void EditorView::keyMarks(int key) {
+  ImDrawList* draw = ImGui::GetBackgroundDrawList();
+  const play::PixelRect& r = views_[static_cast<size_t>(key)].rect;
+  draw->PushClipRect(ImVec2(static_cast<float>(r.x0), static_cast<float>(r.y0)), ImVec2(static_cast<float>(r.x1), static_cast<float>(r.y1)), true);
+  const KeyMarks& marks = session_.marks().keys[static_cast<size_t>(key)];
+  const double scale = pixelsPerUnit(key);
+  const auto at = [&](const Eigen::Vector2d& p) { return im(toScreen(key, p)); };
+  const auto polyline = [&](const Polyline& points, ImU32 colour, float thickness, bool closed = false) {
+    std::vector<ImVec2> screen;
+    for (const Eigen::Vector2d& p : points) screen.push_back(at(p));
+    if (screen.size() >= 2) draw->AddPolyline(screen.data(), static_cast<int>(screen.size()), colour, closed ? ImDrawFlags_Closed : 0, thickness);
+  };
+
+  // Painted stiffness, under everything else (the reference key's strokes).
+  for (const StrokeMark& s : session_.marks().strokes) {
+    if (s.key != marks.name) continue;
+    const float width = static_cast<float>(2 * s.radius * scale);
+    if (s.points.size() == 1) draw->AddCircleFilled(at(s.points[0]), width / 2, kappaColour(s.kappa, 90));
+    polyline(s.points, kappaColour(s.kappa, 90), width);
+  }
+  if (paintKey_ == key) polyline(paintPoints_, kappaColour(tools_.brushKappa, 90), static_cast<float>(2 * tools_.brushRadius * scale));
+
+  // The outline, arc by arc.
+  for (const OutlineArc& arc : session_.arcs(key)) {
+    polyline(arc.points, kShadow, 5);
+    const ImU32 colour = arc.unmatched ? kWrongOrder : arc.colour < 0 ? kPlainOutline : kPalette[arc.colour % std::size(kPalette)];
+    polyline(arc.points, colour, arc.unmatched ? 4.0f : 3.0f);
+  }
+
+  // Cuts, with their kind and name at the first point.
+  for (const CutMark& c : marks.cuts) {
+    polyline(c.points, kShadow, 5);
+    polyline(c.points, kCut, 3);
+    for (const Eigen::Vector2d& p : c.points) draw->AddCircleFilled(at(p), 3, kCut);
+    if (!c.points.empty()) label(draw, ImVec2(at(c.points.front()).x + 6, at(c.points.front()).y + 4), c.name + " (" + c.kind + ")", kCut);
+  }
+  if (cutKey_ == key && !cutPoints_.empty()) {
+    Polyline preview = cutPoints_;
+    if (hoverKey_ == key) preview.push_back(hover_);
+    polyline(preview, kCut, 2);
+    for (const Eigen::Vector2d& p : cutPoints_) draw->AddCircleFilled(at(p), 3, kCut);
+  }
+
+  // Interior features: a cross, and the disc that moves with the point.
+  for (const auto& [name, p] : marks.interior) {
+    const ImVec2 c = at(p);
+    const bool chosen = key == selectedKey_ && selectedInterior_ && name == selected_;
+    const ImU32 colour = chosen ? kSelected : kInterior;
+    if (marks.radii.count(name)) draw->AddCircle(c, static_cast<float>(marks.radii.at(name) * scale), colour, 0, 2);
+    draw->AddLine(ImVec2(c.x - 6, c.y), ImVec2(c.x + 6, c.y), colour, 2);
+    draw->AddLine(ImVec2(c.x, c.y - 6), ImVec2(c.x, c.y + 6), colour, 2);
+    label(draw, ImVec2(c.x + 7, c.y + 3), name, colour);
+  }
+  if (dragging_ && selectedInterior_ && selectedKey_ == key && !marks.interior.count(selected_)) {
+    draw->AddCircle(at(dragAt_), static_cast<float>((hover_ - dragAt_).norm() * scale), kSelected, 0, 2);
+    draw->AddCircleFilled(at(dragAt_), 3, kSelected);
+  }
+
+  // Features with their names; the one being dragged where it goes.
+  for (const auto& [name, p0] : marks.features) {
+    const bool chosen = key == selectedKey_ && !selectedInterior_ && name == selected_;
+    const Eigen::Vector2d p = chosen && dragging_ ? dragAt_ : p0;
+    const ImVec2 c = at(p);
+    draw->AddCircleFilled(c, 6, kShadow);
+    draw->AddCircleFilled(c, 4.5f, chosen ? kSelected : kFeature);
+    label(draw, ImVec2(c.x + 7, c.y - 16), name, chosen ? kSelected : kFeature);
+  }
+
+  // The view's title: the key, its part, what to do here.
+  std::string title = marks.name + (marks.name == session_.marks().reference ? "  (reference)" : "");
+  const std::optional<MissingFeature> next = session_.nextMissing(lastEditedKey_);
+  ImU32 titleColour = IM_COL32(255, 255, 255, 255);
+  if (next && next->key == marks.name) {
+    title += "  - place `" + next->feature + "` here";
+    titleColour = kSelected;
+  }
+  const std::string error = session_.outlineError(key);
+  if (!error.empty() || (!buildError_.empty() && buildError_.find("`" + marks.name + "`") != std::string::npos) ||
+      (!buildError_.empty() && buildError_.find("\"" + marks.name + "\"") != std::string::npos)) {
+    title += "  - does not build";
+    titleColour = kWrongOrder;
+  }
+  label(draw, ImVec2(static_cast<float>(r.x0) + 6, static_cast<float>(r.y0) + 5), title, titleColour);
+  if (hoverKey_ == key) {
+    char where[64];
+    std::snprintf(where, sizeof where, "x %.1f  y %.1f px", hover_.x(), hover_.y());
+    label(draw, ImVec2(static_cast<float>(r.x0) + 6, static_cast<float>(r.y1) - 22), where, IM_COL32(255, 255, 255, 255));
+  }
+  draw->AddRect(ImVec2(static_cast<float>(r.x0), static_cast<float>(r.y0)), ImVec2(static_cast<float>(r.x1), static_cast<float>(r.y1)),
+                key == hoverKey_ ? IM_COL32(255, 210, 0, 255) : IM_COL32(60, 60, 66, 255), 0, 0, 2);
+  draw->PopClipRect();
+}
+
+}  // namespace ib::editor

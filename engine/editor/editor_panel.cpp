@@ -1,0 +1,159 @@
+// EditorView's Edit tab (tools, selection, what to place next, keys, undo / redo / save) and the
+// unsaved-changes dialog.
+#include "editor/editor_view.h"
+
+#include "core/error.h"
+
+#include <imgui.h>
+
+#include <cstdio>
+
+namespace ib::editor {
+
+namespace {
+
+const char* const kToolNames[] = {"Features", "Cut", "Interior", "Stiffness"};
+const char* const kToolKeys[] = {"Q", "C", "D", "B"};
+const char* const kToolHelp[] = {
+    "Click on a key's outline to place a feature; drag one along the outline. Delete removes the\n"
+    "selected one from its key, Shift+Delete from every key.",
+    "Click the cut's points inside a key, double-click or press Enter to end it (Esc cancels).",
+    "Press at a detail inside the shape; drag to give it a disc that moves with it as one piece.",
+    "Paint stiffness on the reference key: kappa above 1 keeps a part rigid, below 1 lets it give."};
+
+}  // namespace
+
+void EditorView::panel() {
+  const SceneDocument& doc = session_.document();
+  int tool = static_cast<int>(tools_.tool);
+  for (int t = 0; t < 4; ++t) {
+    if (t > 0) ImGui::SameLine();
+    if (ImGui::RadioButton(kToolNames[t], tool == t)) tools_.tool = static_cast<Tool>(t);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", kToolKeys[t]);
+  }
+  ImGui::TextWrapped("%s", kToolHelp[static_cast<int>(tools_.tool)]);
+  if (tools_.tool == Tool::kCut) ImGui::Combo("kind", &tools_.cutKind, "notch\0split\0slit\0");
+  if (tools_.tool == Tool::kPaint) {
+    float radius = static_cast<float>(tools_.brushRadius), kappa = static_cast<float>(tools_.brushKappa);
+    if (ImGui::SliderFloat("radius px", &radius, 1, 200, "%.0f", ImGuiSliderFlags_Logarithmic)) tools_.brushRadius = radius;
+    if (ImGui::SliderFloat("kappa", &kappa, 0.1f, 10, "%.2f", ImGuiSliderFlags_Logarithmic)) tools_.brushKappa = kappa;
+    ImGui::Checkbox("erase (click a stroke)", &tools_.erase);
+  }
+  if (tools_.tool == Tool::kFeature) {
+    float snap = static_cast<float>(tools_.snapScreenPixels);
+    if (ImGui::SliderFloat("snap (screen px)", &snap, 2, 40, "%.0f")) tools_.snapScreenPixels = snap;
+  }
+
+  ImGui::Separator();
+  // What to do next, and what is wrong, in words.
+  if (const std::optional<MissingFeature> next = session_.nextMissing(lastEditedKey_))
+    ImGui::TextColored(ImVec4(1, 0.82f, 0, 1), "place `%s` in key `%s`%s", next->feature.c_str(), next->key.c_str(),
+                       next->interior ? " (Interior tool)" : "");
+  if (!session_.orderProblem().empty()) ImGui::TextColored(ImVec4(1, 0.35f, 0.35f, 1), "%s", session_.orderProblem().c_str());
+  else if (doc.problem() && !session_.nextMissing(lastEditedKey_)) ImGui::TextColored(ImVec4(1, 0.35f, 0.35f, 1), "%s", doc.problem()->c_str());
+  if (!buildError_.empty()) ImGui::TextColored(ImVec4(1, 0.35f, 0.35f, 1), "build: %s", buildError_.c_str());
+  if (!status_.empty()) ImGui::TextColored(statusError_ ? ImVec4(1, 0.35f, 0.35f, 1) : ImVec4(0.6f, 1, 0.6f, 1), "%s", status_.c_str());
+  if (player_.reloader().busy())
+    ImGui::Text("rebuilding: %s (%.0f%%)", player_.reloader().stage().c_str(), 100 * player_.reloader().progress());
+  else if (latencyMs_ >= 0)
+    ImGui::TextDisabled("last edit to new frame: %.0f ms", latencyMs_);
+
+  // The selection.
+  if (selectedKey_ >= 0 && selectedKey_ < session_.keyCount() && !selected_.empty()) {
+    ImGui::Separator();
+    const std::string key = session_.marks().keys[static_cast<size_t>(selectedKey_)].name;
+    ImGui::Text("%s `%s` in key `%s`", selectedInterior_ ? "interior feature" : "feature", selected_.c_str(), key.c_str());
+    ImGui::InputText("##name", renameBuffer_.data(), renameBuffer_.size());
+    ImGui::SameLine();
+    if (ImGui::Button("Rename") && renameBuffer_[0] != '\0' && selected_ != renameBuffer_.data()) {
+      const std::string to = renameBuffer_.data();
+      if (selectedInterior_) run(edit::RenameInteriorFeature{selected_, to});
+      else run(edit::RenameFeature{selected_, to});
+      if (status_.empty() || !statusError_) selected_ = to;
+    }
+    if (ImGui::Button("Delete in this key")) {
+      if (selectedInterior_) run(edit::RemoveInteriorFeature{selected_, key});
+      else run(edit::RemoveFeature{selected_, key});
+      selected_.clear();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Delete in every key")) {
+      if (selectedInterior_) run(edit::RemoveInteriorFeature{selected_, ""});
+      else run(edit::RemoveFeature{selected_, ""});
+      selected_.clear();
+    }
+  }
+  keysPanel();
+
+  ImGui::Separator();
+  if (!doc.canUndo()) ImGui::BeginDisabled();
+  if (ImGui::Button("Undo")) shortcut(90, true, false);
+  if (!doc.canUndo()) ImGui::EndDisabled();
+  if (doc.canUndo() && ImGui::IsItemHovered()) ImGui::SetTooltip("Ctrl+Z: %s", doc.undoLabel().c_str());
+  ImGui::SameLine();
+  if (!doc.canRedo()) ImGui::BeginDisabled();
+  if (ImGui::Button("Redo")) shortcut(90, true, true);
+  if (!doc.canRedo()) ImGui::EndDisabled();
+  if (doc.canRedo() && ImGui::IsItemHovered()) ImGui::SetTooltip("Ctrl+Shift+Z: %s", doc.redoLabel().c_str());
+  ImGui::SameLine();
+  if (ImGui::Button(doc.modified() ? "Save *" : "Save")) shortcut(83, true, false);
+}
+
+void EditorView::keysPanel() {
+  ImGui::Separator();
+  ImGui::TextDisabled("Keys (drop PNG files on the window to add more)");
+  const DocumentMarks& marks = session_.marks();
+  for (int k = 0; k < session_.keyCount(); ++k) {
+    const std::string name = marks.keys[static_cast<size_t>(k)].name;
+    ImGui::PushID(k);
+    ImGui::Text("%d  %s%s", k, name.c_str(), name == marks.reference ? " (reference)" : "");
+    ImGui::SameLine(200);
+    if (k == 0) ImGui::BeginDisabled();
+    if (ImGui::ArrowButton("up", ImGuiDir_Left)) run(edit::MoveKey{name, k - 1});
+    if (k == 0) ImGui::EndDisabled();
+    ImGui::SameLine();
+    if (k + 1 == session_.keyCount()) ImGui::BeginDisabled();
+    if (ImGui::ArrowButton("down", ImGuiDir_Right)) run(edit::MoveKey{name, k + 1});
+    if (k + 1 == session_.keyCount()) ImGui::EndDisabled();
+    ImGui::SameLine();
+    if (ImGui::SmallButton("remove")) run(edit::RemoveKey{name});
+    ImGui::PopID();
+  }
+  ImGui::InputTextWithHint("##drawing", "drawing.png", addKeyBuffer_.data(), addKeyBuffer_.size());
+  ImGui::SameLine();
+  if (ImGui::Button("Add key") && addKeyBuffer_[0] != '\0') {
+    dropped({addKeyBuffer_.data()});
+    addKeyBuffer_[0] = '\0';
+  }
+}
+
+bool EditorView::closeDialog() {
+  if (closeAsked_) {
+    ImGui::OpenPopup("Unsaved changes");
+    closeAsked_ = false;
+  }
+  bool close = false;
+  if (ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+    ImGui::Text("%s has unsaved changes.", session_.document().path().c_str());
+    if (ImGui::Button("Save and close")) {
+      try {
+        session_.save();
+        close = true;
+      } catch (const InputError& e) {
+        report(e.what(), true);
+      }
+      ImGui::CloseCurrentPopup();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Close without saving")) {
+      close = true;
+      ImGui::CloseCurrentPopup();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel")) ImGui::CloseCurrentPopup();
+    ImGui::EndPopup();
+  }
+  return close;
+}
+
+}  // namespace ib::editor

@@ -1,0 +1,402 @@
+#include "editor/editor_view.h"
+
+#include "core/error.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+namespace ib::editor {
+
+namespace {
+
+constexpr double kPreviewShare = 0.36;   // of the canvas's height: the animation below the keys
+constexpr double kGrabScreenPixels = 9;  // window px: a press this close to a mark takes it
+constexpr double kIdleBeforeOptimizing = 1.5;  // s without an edit before the Comesh-optimized rebuild
+
+const char* const kCutKinds[] = {"notch", "split", "slit"};
+
+}  // namespace
+
+EditorView::EditorView(EditorSession& session, play::PlayerSession& player) : session_(session), player_(player) {
+  loadDrawings();
+  sentGeneration_ = session_.generation();  // the player built the scene as opened
+}
+
+void EditorView::loadDrawings() {
+  std::vector<std::string> files;
+  for (int k = 0; k < session_.keyCount(); ++k) files.push_back(session_.drawingPath(k));
+  if (files == drawingFiles_) return;
+  std::vector<RgbaImage> drawings;
+  for (const std::string& file : files) {
+    try {
+      drawings.push_back(readPng(file));
+    } catch (const InputError& e) {
+      report(e.what(), true);
+      RgbaImage blank;  // the key's view stays, empty, with the message
+      blank.width = blank.height = 1;
+      blank.pixels.assign(4, 0);
+      drawings.push_back(blank);
+    }
+  }
+  drawings_ = std::move(drawings);
+  drawingFiles_ = files;
+  views_.resize(files.size());
+  ++drawingsGeneration_;
+}
+
+void EditorView::layout(const play::PixelRect& canvas, int width, int height) {
+  canvas_ = canvas;
+  width_ = width;
+  height_ = height;
+  const double split = canvas.y1 - (canvas.y1 - canvas.y0) * kPreviewShare;
+  preview_ = {canvas.x0, split, canvas.x1, canvas.y1};
+  const int m = std::max<int>(1, static_cast<int>(views_.size()));
+  const double w = (canvas.x1 - canvas.x0) / m;
+  for (int k = 0; k < static_cast<int>(views_.size()); ++k)
+    views_[static_cast<size_t>(k)].rect = {canvas.x0 + k * w + 2, canvas.y0 + 2, canvas.x0 + (k + 1) * w - 2, split - 4};
+}
+
+render::ViewBox EditorView::windowViewOf(int key) const {
+  const RgbaImage& d = drawings_[static_cast<size_t>(key)];
+  const KeyView& v = views_[static_cast<size_t>(key)];
+  return v.navigation.windowView({0, 0, double(d.width), double(d.height)}, v.rect, width_, height_);
+}
+
+double EditorView::pixelsPerUnit(int key) const {
+  const render::ViewBox view = windowViewOf(key);
+  return width_ / (view.x1 - view.x0);
+}
+
+Eigen::Vector2d EditorView::toDrawing(int key, double x, double y) const {
+  const render::ViewBox view = windowViewOf(key);
+  return {view.x0 + x / width_ * (view.x1 - view.x0), view.y0 + y / height_ * (view.y1 - view.y0)};
+}
+
+Eigen::Vector2d EditorView::toScreen(int key, const Eigen::Vector2d& p) const { return play::toWindow(windowViewOf(key), width_, height_, p); }
+
+int EditorView::viewUnder(double x, double y) const {
+  for (int k = 0; k < static_cast<int>(views_.size()); ++k)
+    if (views_[static_cast<size_t>(k)].rect.contains(x, y)) return k;
+  return -1;
+}
+
+std::vector<render::SheetView> EditorView::sheetViews() const {
+  std::vector<render::SheetView> out;
+  for (int k = 0; k < static_cast<int>(views_.size()); ++k) {
+    const play::PixelRect& r = views_[static_cast<size_t>(k)].rect;
+    render::SheetView v;
+    v.key = k;
+    v.view = windowViewOf(k);
+    v.scissor = {static_cast<int>(r.x0), static_cast<int>(r.y0), static_cast<int>(r.x1 - r.x0), static_cast<int>(r.y1 - r.y0)};
+    v.background = k == hoverKey_ ? std::array<float, 4>{0.86f, 0.86f, 0.87f, 1} : std::array<float, 4>{0.82f, 0.82f, 0.83f, 1};
+    out.push_back(v);
+  }
+  return out;
+}
+
+void EditorView::report(const std::string& text, bool error) {
+  status_ = text;
+  statusError_ = error;
+  player_.messages().push_back({text, error});
+}
+
+void EditorView::run(const edit::SceneEdit& edit) {
+  try {
+    session_.apply(edit);
+    status_.clear();
+    editTime_ = std::chrono::steady_clock::now();
+  } catch (const InputError& e) {
+    report(e.what(), true);
+  }
+}
+
+void EditorView::update() {
+  loadDrawings();
+  // A change: the initial map at once (tens of ms), the optimized multimesh once the edits pause.
+  const SceneDocument& doc = session_.document();
+  const auto now = std::chrono::steady_clock::now();
+  if (session_.generation() != sentGeneration_) {
+    sentGeneration_ = session_.generation();
+    if (!doc.problem()) {
+      player_.reloader().rebuildFromText(doc.text(), false);
+      optimizedSent_ = false;
+      awaitingFrame_ = true;
+      buildError_.clear();
+    }
+  } else if (!optimizedSent_ && !doc.problem() && !player_.reloader().busy() &&
+             std::chrono::duration<double>(now - editTime_).count() > kIdleBeforeOptimizing) {
+    player_.reloader().rebuildFromText(doc.text(), true);
+    optimizedSent_ = true;
+  }
+  for (const play::PlayerSession::Message& m : player_.messages())
+    if (m.error && m.text.rfind("reload failed: ", 0) == 0) buildError_ = m.text.substr(15);
+}
+
+bool EditorView::input() {
+  const ImGuiIO& io = ImGui::GetIO();
+  hoverKey_ = io.WantCaptureMouse ? -1 : viewUnder(io.MousePos.x, io.MousePos.y);
+  // A gesture stays with its view until the button is released, wherever the pointer goes.
+  int key = hoverKey_;
+  if (dragging_ && selectedKey_ >= 0) key = selectedKey_;
+  if (paintKey_ >= 0 && ImGui::IsMouseDown(ImGuiMouseButton_Left)) key = paintKey_;
+  if (key < 0 || key >= static_cast<int>(views_.size())) return false;
+  KeyView& view = views_[static_cast<size_t>(key)];
+  const RgbaImage& d = drawings_[static_cast<size_t>(key)];
+  const render::ViewBox content{0, 0, double(d.width), double(d.height)};
+  hover_ = toDrawing(key, io.MousePos.x, io.MousePos.y);
+  if (io.MouseWheel != 0) view.navigation.zoomAt(std::pow(1.15, io.MouseWheel), io.MousePos.x, io.MousePos.y, content, view.rect, width_, height_);
+  if ((ImGui::IsMouseDown(ImGuiMouseButton_Right) && !ImGui::IsMouseClicked(ImGuiMouseButton_Right)) ||
+      (ImGui::IsMouseDown(ImGuiMouseButton_Middle) && !ImGui::IsMouseClicked(ImGuiMouseButton_Middle)))
+    view.navigation.drag(io.MouseDelta.x, io.MouseDelta.y, content, view.rect, width_, height_);
+  const bool pressed = ImGui::IsMouseClicked(ImGuiMouseButton_Left);
+  const bool held = ImGui::IsMouseDown(ImGuiMouseButton_Left) && !pressed;
+  const bool released = ImGui::IsMouseReleased(ImGuiMouseButton_Left);
+  switch (tools_.tool) {
+    case Tool::kFeature: featureInput(key, hover_, pressed, held, released); break;
+    case Tool::kCut: cutInput(key, hover_, pressed, ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)); break;
+    case Tool::kInterior: interiorInput(key, hover_, pressed, released); break;
+    case Tool::kPaint: paintInput(key, hover_, pressed, held, released); break;
+  }
+  return true;
+}
+
+void EditorView::featureInput(int key, const Eigen::Vector2d& p, bool pressed, bool held, bool released) {
+  const KeyMarks& marks = session_.marks().keys[static_cast<size_t>(key)];
+  const double unit = 1 / pixelsPerUnit(key);  // drawing px per window px
+  if (pressed) {
+    // On a feature: select it and start dragging it along the outline.
+    std::string nearest;
+    double best = kGrabScreenPixels * unit;
+    for (const auto& [name, at] : marks.features)
+      if ((at - p).norm() <= best) best = (at - p).norm(), nearest = name;
+    if (!nearest.empty()) {
+      selectedKey_ = key;
+      selected_ = nearest;
+      selectedInterior_ = false;
+      dragging_ = true;
+      dragAt_ = marks.features.at(nearest);
+      std::snprintf(renameBuffer_.data(), renameBuffer_.size(), "%s", nearest.c_str());
+      return;
+    }
+    const std::optional<Eigen::Vector2d> on = session_.snap(key, p, tools_.snapScreenPixels * unit);
+    if (!on) {
+      report("click on key `" + marks.name + "`'s outline (within " + std::to_string(int(tools_.snapScreenPixels)) +
+                 " screen px) to place a feature there",
+             true);
+      return;
+    }
+    // The feature this key still lacks comes first; else a new one.
+    std::string name;
+    for (const MissingFeature& m : missingFeatures(session_.marks(), -1))
+      if (m.key == marks.name && !m.interior) {
+        name = m.feature;
+        break;
+      }
+    if (name.empty()) name = session_.freshName("f");
+    run(edit::SetFeature{marks.name, name, *on});
+    selectedKey_ = key;
+    selected_ = name;
+    selectedInterior_ = false;
+    lastEditedKey_ = key;
+    std::snprintf(renameBuffer_.data(), renameBuffer_.size(), "%s", name.c_str());
+    return;
+  }
+  if (dragging_ && held) {
+    if (const auto on = session_.snap(key, p, INFINITY)) dragAt_ = *on;
+    return;
+  }
+  if (dragging_ && released) {
+    dragging_ = false;
+    const auto it = marks.features.find(selected_);
+    if (it != marks.features.end() && (it->second - dragAt_).norm() > 1e-6) {
+      run(edit::SetFeature{marks.name, selected_, dragAt_});
+      lastEditedKey_ = key;
+    }
+  }
+}
+
+void EditorView::cutInput(int key, const Eigen::Vector2d& p, bool pressed, bool doubleClicked) {
+  if (!pressed && !doubleClicked) return;
+  if (cutKey_ != key) {
+    cutKey_ = key;
+    cutPoints_.clear();
+  }
+  if (doubleClicked) {
+    finishCut();
+    return;
+  }
+  cutPoints_.push_back(p);
+}
+
+void EditorView::finishCut() {
+  if (cutKey_ < 0 || cutKey_ >= session_.keyCount()) return;
+  // A double click's second press added the same point again.
+  while (cutPoints_.size() >= 2 && (cutPoints_.back() - cutPoints_[cutPoints_.size() - 2]).norm() < 1e-9) cutPoints_.pop_back();
+  if (cutPoints_.size() < 2) {
+    report("a cut needs two points or more: click them in the key, then double-click or press Enter", true);
+    return;
+  }
+  const std::string key = session_.marks().keys[static_cast<size_t>(cutKey_)].name;
+  const std::string name = session_.freshName("cut");
+  run(edit::AddCut{key, name, kCutKinds[tools_.cutKind], cutPoints_});
+  lastEditedKey_ = cutKey_;
+  cutPoints_.clear();
+  cutKey_ = -1;
+}
+
+void EditorView::interiorInput(int key, const Eigen::Vector2d& p, bool pressed, bool released) {
+  const KeyMarks& marks = session_.marks().keys[static_cast<size_t>(key)];
+  const double unit = 1 / pixelsPerUnit(key);
+  if (pressed) {
+    selectedKey_ = key;
+    selectedInterior_ = true;
+    dragging_ = true;
+    dragAt_ = p;
+    selected_.clear();
+    for (const auto& [name, at] : marks.interior)
+      if ((at - p).norm() <= kGrabScreenPixels * unit) selected_ = name, dragAt_ = at;
+    if (selected_.empty()) {
+      for (const MissingFeature& m : missingFeatures(session_.marks(), -1))
+        if (m.key == marks.name && m.interior) {
+          selected_ = m.feature;
+          break;
+        }
+      if (selected_.empty()) selected_ = session_.freshName("detail");
+      hover_ = p;
+    }
+    std::snprintf(renameBuffer_.data(), renameBuffer_.size(), "%s", selected_.c_str());
+    return;
+  }
+  if (!dragging_ || !released) return;
+  dragging_ = false;
+  const auto existing = marks.interior.find(selected_);
+  if (existing != marks.interior.end()) {  // moved: the radius stays
+    const double moved = (p - dragAt_).norm();
+    if (moved * pixelsPerUnit(key) > 2) {
+      const auto r = marks.radii.find(selected_);
+      run(edit::SetInteriorFeature{marks.name, selected_, existing->second + (p - dragAt_),
+                                   r == marks.radii.end() ? std::nullopt : std::optional<double>(r->second)});
+    }
+    return;
+  }
+  // New: the press is the point, the drag the radius (none for a click).
+  const double radius = (p - dragAt_).norm();
+  std::optional<double> r;
+  if (radius * pixelsPerUnit(key) > 3) r = std::clamp(radius, kMinInteriorRadius, kMaxInteriorRadius);
+  // The same feature in every key has one radius: a later key takes the first's.
+  for (const KeyMarks& k : session_.marks().keys)
+    if (k.radii.count(selected_)) r = k.radii.at(selected_);
+  run(edit::SetInteriorFeature{marks.name, selected_, dragAt_, r});
+  lastEditedKey_ = key;
+}
+
+void EditorView::paintInput(int key, const Eigen::Vector2d& p, bool pressed, bool held, bool released) {
+  const DocumentMarks& marks = session_.marks();
+  const std::string name = marks.keys[static_cast<size_t>(key)].name;
+  if (pressed && name != marks.reference) {
+    report("paint stiffness on the reference key `" + marks.reference + "`: its triangles carry kappa", true);
+    return;
+  }
+  if (pressed && tools_.erase) {
+    for (const StrokeMark& s : marks.strokes)
+      for (const Eigen::Vector2d& q : s.points)
+        if (s.key == name && (q - p).norm() <= s.radius + tools_.brushRadius) {
+          run(edit::RemoveStiffness{s.name});
+          return;
+        }
+    return;
+  }
+  if (tools_.erase) return;
+  if (pressed) {
+    paintKey_ = key;
+    paintPoints_ = {p};
+    return;
+  }
+  if (paintKey_ == key && held) {
+    if ((p - paintPoints_.back()).norm() >= 0.5 * tools_.brushRadius) paintPoints_.push_back(p);
+    return;
+  }
+  if (paintKey_ == key && released) {
+    if ((p - paintPoints_.back()).norm() > 1e-9) paintPoints_.push_back(p);
+    run(edit::AddStiffnessStroke{session_.freshName("stroke"), name, paintPoints_, tools_.brushRadius, tools_.brushKappa});
+    paintKey_ = -1;
+    paintPoints_.clear();
+  }
+}
+
+bool EditorView::shortcut(int key, bool ctrl, bool shift) {
+  constexpr int kZ = 90, kS = 83, kEnter = 257, kKeypadEnter = 335, kDelete = 261, kBackspace = 259, kEscape = 256;
+  if (ctrl && key == kZ) {
+    if (shift) session_.redo();
+    else session_.undo();
+    editTime_ = std::chrono::steady_clock::now();
+    dragging_ = false;
+    return true;
+  }
+  if (ctrl && key == kS) {
+    try {
+      session_.save();
+      report("saved " + session_.document().path(), false);
+    } catch (const InputError& e) {
+      report(e.what(), true);
+    }
+    return true;
+  }
+  if (ctrl) return false;
+  constexpr int kQ = 81, kC = 67, kD = 68, kB = 66;  // the tools
+  if (key == kQ || key == kC || key == kD || key == kB) {
+    tools_.tool = key == kQ ? Tool::kFeature : key == kC ? Tool::kCut : key == kD ? Tool::kInterior : Tool::kPaint;
+    return true;
+  }
+  if ((key == kEnter || key == kKeypadEnter) && cutKey_ >= 0) {
+    finishCut();
+    return true;
+  }
+  if (key == kEscape && (cutKey_ >= 0 || paintKey_ >= 0)) {
+    cutKey_ = paintKey_ = -1;
+    cutPoints_.clear();
+    paintPoints_.clear();
+    return true;
+  }
+  if ((key == kDelete || key == kBackspace) && selectedKey_ >= 0 && !selected_.empty()) {
+    const std::string keyName = shift ? "" : session_.marks().keys[static_cast<size_t>(selectedKey_)].name;
+    if (selectedInterior_) run(edit::RemoveInteriorFeature{selected_, keyName});
+    else run(edit::RemoveFeature{selected_, keyName});
+    selected_.clear();
+    return true;
+  }
+  return false;
+}
+
+void EditorView::newMeshPresented() {
+  if (!awaitingFrame_ || session_.generation() != sentGeneration_) return;
+  awaitingFrame_ = false;
+  latencyMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - editTime_).count();
+}
+
+std::string EditorView::title() const {
+  return "inbetween edit - " + session_.document().path() + (session_.document().modified() ? " *" : "");
+}
+
+bool EditorView::mayClose() {
+  if (!session_.document().modified()) return true;
+  closeAsked_ = true;
+  return false;
+}
+
+void EditorView::dropped(const std::vector<std::string>& paths) {
+  for (const std::string& path : paths) {
+    const std::filesystem::path file(path);
+    if (file.extension() != ".png" && file.extension() != ".PNG") {
+      report(path + ": drop PNG drawings to add them as keys", true);
+      continue;
+    }
+    const std::filesystem::path folder = std::filesystem::absolute(session_.document().path()).parent_path();
+    run(edit::AddKey{file.stem().string(), std::filesystem::relative(std::filesystem::absolute(file), folder).generic_string()});
+  }
+}
+
+}  // namespace ib::editor

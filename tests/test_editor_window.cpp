@@ -1,0 +1,202 @@
+// The editor's window (`inbetween edit`) under Xvfb, driven by real X input (xdotool): a new
+// scene made from square-arch-notch's two drawings gets a feature clicked onto both outlines, the
+// feature dragged along one, a notch cut drawn with its three features placed where it is open,
+// an interior feature with a dragged radius, a painted stiffness stroke, undo, and Ctrl+S; the
+// saved scene then meshes and renders with `inbetween`. Screenshots (the temporary folder) show
+// the coloured arcs and labels, and are measured.
+#include "editor/editor_session.h"
+#include "editor/editor_view.h"
+#include "play_fixtures.h"
+#include "scene/scene.h"
+#include "scene/scene_document.h"
+
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <filesystem>
+#include <string>
+
+using namespace ib;
+using namespace playtest;
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr int kEditWidth = 1280, kEditHeight = 800;
+
+// A scene of square-arch-notch's drawings, no annotations, as `inbetween new` writes it.
+fs::path newScene(const std::string& name) {
+  const fs::path folder = fs::temp_directory_path() / ("inbetween-editor-" + name);
+  fs::remove_all(folder);
+  fs::create_directories(folder);
+  for (const char* png : {"square.png", "arch.png"})
+    fs::copy_file(fs::path(INBETWEEN_ASSETS) / "square-arch-notch" / png, folder / png);
+  const fs::path scene = folder / "scene.json";
+  const test::CommandRun run = inbetween("new " + scene.string() + " " + (folder / "square.png").string() + " " +
+                                         (folder / "arch.png").string() + " --no-window");
+  REQUIRE(run.code == 0);
+  return scene;
+}
+
+// "mousemove --window X Y" at key k's drawing point (x, y), offset by (dx, dy) window pixels.
+std::string at(editor::EditorView& view, int key, double x, double y, int dx = 0, int dy = 0) {
+  const Eigen::Vector2d p = view.toScreen(key, {x, y});
+  return "mousemove --window " + std::to_string(static_cast<int>(std::lround(p.x())) + dx) + " " +
+         std::to_string(static_cast<int>(std::lround(p.y())) + dy);
+}
+
+// Pixels of window rows [y0, y1) and columns [x0, x1) within 40/255 of an RGB colour.
+int colourCount(const RgbaImage& shot, int x0, int y0, int x1, int y1, int r, int g, int b) {
+  int count = 0;
+  for (int y = y0; y < y1; ++y)
+    for (int x = x0; x < x1; ++x) {
+      const uint8_t* p = &shot.pixels[4 * (static_cast<size_t>(y) * shot.width + x)];
+      if (std::abs(p[0] - r) <= 40 && std::abs(p[1] - g) <= 40 && std::abs(p[2] - b) <= 40) ++count;
+    }
+  return count;
+}
+
+}  // namespace
+
+TEST_CASE("editor window: features clicked onto two keys' outlines, dragged, a cut with its features, an interior "
+          "feature, paint, undo and save make a scene that meshes and renders", "[window]") {
+  const fs::path scene = newScene("window");
+  editor::EditorSession editing(SceneDocument::load(scene.string()));
+  LiveWindow live(scene.string(), kEditWidth, kEditHeight, &editing);
+  editor::EditorView& view = *live.window->editor();
+  const auto feature = [&](const std::string& key, const std::string& name) -> std::optional<Eigen::Vector2d> {
+    const int k = editing.marks().keyIndex(key);
+    if (k < 0 || !editing.marks().keys[static_cast<size_t>(k)].features.count(name)) return std::nullopt;
+    return editing.marks().keys[static_cast<size_t>(k)].features.at(name);
+  };
+
+  // A click 4 window px above the square's top edge snaps onto it; the editor then asks for the
+  // same feature in the arch, and the next click there places it.
+  live.send(at(view, 0, 64, 28, 0, -4) + " click 1");
+  live.frames(4);
+  REQUIRE(feature("square", "f1"));
+  CHECK(std::abs(feature("square", "f1")->y() - 28) < 1.0);
+  REQUIRE(editing.nextMissing(0));
+  CHECK(editing.nextMissing(0)->feature == "f1");
+  CHECK(editing.nextMissing(0)->key == "arch");
+  live.send(at(view, 1, 64, 20, 3, -3) + " click 1");
+  live.frames(4);
+  REQUIRE(feature("arch", "f1"));
+  CHECK(std::abs(feature("arch", "f1")->y() - 20) < 1.0);
+  CHECK_FALSE(editing.document().problem());
+  // A second feature on the other side, in both keys: the outline is in two coloured arcs.
+  live.send(at(view, 0, 28, 64, -3, 0) + " click 1");
+  live.frames(3);
+  live.send(at(view, 1, 20, 64, -3, 0) + " click 1");
+  live.frames(3);
+  REQUIRE(feature("square", "f2"));
+  REQUIRE(feature("arch", "f2"));
+
+  // Drag the square's f1 along the outline, 20 drawing px to the right.
+  live.send(at(view, 0, 64, 28) + " mousedown 1");
+  live.frames(3);
+  live.send(at(view, 0, 74, 27));
+  live.frames(3);
+  live.send(at(view, 0, 84, 26));
+  live.frames(3);
+  live.send("mouseup 1");
+  live.frames(4);
+  REQUIRE(feature("square", "f1"));
+  CHECK(feature("square", "f1")->x() == Approx(84).margin(1.0));
+  CHECK(std::abs(feature("square", "f1")->y() - 28) < 1.0);
+
+  // A notch cut in the square (C, two clicks, Enter), then its three features
+  // where it is open, in the arch, as the editor asks for them.
+  live.send("key c");
+  live.frames(2);
+  live.send(at(view, 0, 64, 100) + " click 1");
+  live.frames(3);
+  live.send(at(view, 0, 64, 64) + " click 1");
+  live.frames(3);
+  live.send("key Return");
+  live.frames(3);
+  std::string messages;
+  for (const auto& m : live.session.messages()) messages += m.text + "\n";
+  INFO(messages);
+  REQUIRE(editing.marks().keys[0].cuts.size() == 1);
+  CHECK(editing.marks().keys[0].cuts[0].kind == "notch");
+  live.send("key q");
+  live.frames(2);
+  for (const auto& [name, x, y] : {std::tuple<const char*, double, double>{"cut1.left", 46, 108}, {"cut1.right", 82, 108}, {"cut1.tip", 64, 56}}) {
+    REQUIRE(editing.nextMissing(0));
+    CHECK(editing.nextMissing(0)->feature == name);
+    live.send(at(view, 1, x, y) + " click 1");
+    live.frames(3);
+    CHECK(feature("arch", name));
+  }
+  INFO((editing.document().problem() ? *editing.document().problem() : std::string()));
+  CHECK_FALSE(editing.document().problem());
+
+  // An interior feature with a radius dragged out to 6 px, in both keys.
+  live.send("key d");
+  live.frames(2);
+  for (int k = 0; k < 2; ++k) {
+    const double x = k == 0 ? 48 : 40, y = k == 0 ? 46 : 40;
+    live.send(at(view, k, x, y) + " mousedown 1");
+    live.frames(3);
+    live.send(at(view, k, x + 6, y));
+    live.frames(3);
+    live.send("mouseup 1");
+    live.frames(3);
+  }
+  REQUIRE(editing.marks().keys[0].interior.count("detail1"));
+  REQUIRE(editing.marks().keys[1].interior.count("detail1"));
+  CHECK(editing.marks().keys[0].radii.at("detail1") == Approx(6).margin(1.0));
+
+  // A stiffness stroke painted across the square (the reference), then undone and redone.
+  live.send("key b");
+  live.frames(2);
+  live.send(at(view, 0, 40, 50) + " mousedown 1");
+  live.frames(3);
+  for (int x = 50; x <= 90; x += 10) {
+    live.send(at(view, 0, x, 50));
+    live.frames(2);
+  }
+  live.send("mouseup 1");
+  live.frames(3);
+  REQUIRE(editing.marks().strokes.size() == 1);
+  CHECK(editing.marks().strokes[0].key == "square");
+  CHECK(editing.marks().strokes[0].points.size() >= 3);
+  live.send("key ctrl+z");
+  live.frames(3);
+  CHECK(editing.marks().strokes.empty());
+  live.send("key ctrl+shift+z");
+  live.frames(3);
+  CHECK(editing.marks().strokes.size() == 1);
+
+  // The picture: the arc from f2 to f1 (no cut between them) has the same colour in both keys
+  // (the palette's second, green), the square's arc from f1 round to f2 the first (crimson); the
+  // arch's cut features split that one into arcs of their own. Red (features out of order) nowhere.
+  live.send("key q mousemove --window 900 700");
+  live.frames(3);
+  const RgbaImage shot = live.shot("editor-marks");
+  for (int k = 0; k < 2; ++k) {
+    const Eigen::Vector2d a = view.toScreen(k, {0, 0}), b = view.toScreen(k, {128, 128});
+    const int x0 = static_cast<int>(a.x()), y0 = static_cast<int>(a.y()), x1 = static_cast<int>(b.x()), y1 = static_cast<int>(b.y());
+    INFO("key " << k);
+    if (k == 0) CHECK(colourCount(shot, x0, y0, x1, y1, 230, 25, 75) > 100);  // palette 0
+    CHECK(colourCount(shot, x0, y0, x1, y1, 60, 180, 75) > 100);              // palette 1, in both
+    CHECK(colourCount(shot, x0, y0, x1, y1, 255, 0, 0) == 0);
+  }
+  CHECK(live.window->ui().width == kEditWidth);
+  CHECK(view.title().find(" *") != std::string::npos);
+
+  // Ctrl+S writes the scene; it loads, meshes and renders.
+  live.send("key ctrl+s");
+  live.frames(3);
+  CHECK_FALSE(editing.document().modified());
+  CHECK(view.title().find(" *") == std::string::npos);
+  const Scene saved = loadScene(scene.string());
+  CHECK(saved.keys.size() == 2);
+  CHECK(saved.keys[1].features.size() == 5);
+  CHECK(saved.stiffness.strokes.size() == 1);
+  const fs::path frames = scene.parent_path() / "frames";
+  const test::CommandRun render = inbetween("render " + scene.string() + " -o " + frames.string());
+  INFO(render.err);
+  CHECK(render.code == 0);
+  CHECK(fs::exists(frames / "frame_0000.png"));
+}
