@@ -215,3 +215,33 @@ TEST_CASE("scene reloader: open loads another scene in the background, a failed 
   REQUIRE(waitIdle(reloader, kBuildSeconds));
   CHECK(reloader.takeReloaded());
 }
+
+TEST_CASE("scene reloader: an editor's text builds without the file, its scene carries the request's number, and an "
+          "optimized build of an older text is cancelled by a newer quick one, without an error") {
+  const std::string file = writtenScene("reloader-text");
+  SceneReloader reloader(file);
+  const int keyVertices = reloader.current().mesh->vertexCount();
+  // The same scene at a finer edge length, as text only: the file on disk is unchanged.
+  nlohmann::ordered_json j = nlohmann::ordered_json::parse(readFile(file));
+  j["edge_length"] = j["edge_length"].get<double>() / 2;
+  const int quick = reloader.rebuildFromText(j.dump(2), false);
+  REQUIRE(waitIdle(reloader, kBuildSeconds));
+  CHECK_FALSE(reloader.takeError());
+  REQUIRE(reloader.takeReloaded());
+  CHECK(reloader.current().build == quick);
+  CHECK(reloader.current().mesh->vertexCount() > keyVertices);
+  CHECK(reloader.current().scene.edgeLength == Approx(j["edge_length"].get<double>()));
+  CHECK(nlohmann::ordered_json::parse(readFile(file))["edge_length"].get<double>() == Approx(2 * j["edge_length"].get<double>()));
+
+  // An optimized build, then at once a quick build of another text: the first is cancelled (or,
+  // on a fast machine, finishes first) and the last text's scene is what stays.
+  reloader.rebuildFromText(j.dump(2), true);
+  j["edge_length"] = j["edge_length"].get<double>() * 1.5;
+  const int last = reloader.rebuildFromText(j.dump(2), false);
+  CHECK(last > quick);
+  REQUIRE(waitIdle(reloader, 2 * kBuildSeconds));
+  CHECK_FALSE(reloader.takeError());
+  REQUIRE(reloader.takeReloaded());
+  CHECK(reloader.current().build == last);
+  CHECK(reloader.current().scene.edgeLength == Approx(j["edge_length"].get<double>()));
+}

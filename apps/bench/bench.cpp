@@ -73,6 +73,28 @@ std::vector<std::filesystem::path> benchScenes(const std::filesystem::path& asse
   return scenes;
 }
 
+double edgeLengthOption(const cli::Arguments& arguments) {
+  if (!arguments.has("edge-length")) return 0;
+  const std::string text = arguments.value("edge-length", "");
+  char* end = nullptr;
+  const double edgeLength = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end != '\0' || !(edgeLength >= 0.5 && edgeLength <= 1000))
+    throw InputError("--edge-length: '" + text + "' is not a length in [0.5, 1000] px");
+  return edgeLength;
+}
+
+std::filesystem::path sceneWithEdgeLength(const std::filesystem::path& file, double edgeLength, const std::string& bench) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("inbetween-bench-" + bench + "-" + file.parent_path().filename().string());
+  fs::remove_all(dir);
+  fs::copy(file.parent_path(), dir, fs::copy_options::recursive);
+  std::ifstream in(file);
+  nlohmann::json scene = nlohmann::json::parse(in);
+  if (edgeLength > 0) scene["edge_length"] = edgeLength;
+  std::ofstream(dir / "scene.json") << scene.dump(2);
+  return dir / "scene.json";
+}
+
 void showStatus(const std::string& text) {
   if (isatty(STDERR_FILENO)) std::fprintf(stderr, "\r\033[K%s", text.c_str());
 }
@@ -82,7 +104,7 @@ namespace {
 std::vector<Benchmark> benchmarks() {
   return {interpBenchmark(), comeshBenchmark(), animBenchmark(), meshBenchmark(),
 #ifdef INBETWEEN_WITH_ENGINE
-          renderBenchmark(), playBenchmark(),
+          renderBenchmark(), playBenchmark(), editBenchmark(),
 #endif
           cutBenchmark(), popsBenchmark(), shapeBenchmark(), examplesBenchmark()};
 }
@@ -121,7 +143,7 @@ int runBench(const std::vector<std::string>& args) {
     return 0;
   }
 #ifndef INBETWEEN_WITH_ENGINE
-  if (args[0] == "render" || args[0] == "play")
+  if (args[0] == "render" || args[0] == "play" || args[0] == "edit")
     throw InputError("bench " + args[0] + ": this inbetween was built without the engine (INBETWEEN_ENGINE=OFF)");
 #endif
   std::string names;

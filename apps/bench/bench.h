@@ -44,6 +44,7 @@ Benchmark meshBenchmark();
 #ifdef INBETWEEN_WITH_ENGINE
 Benchmark renderBenchmark();
 Benchmark playBenchmark();
+Benchmark editBenchmark();
 #endif
 Benchmark cutBenchmark();
 Benchmark popsBenchmark();
@@ -80,6 +81,12 @@ std::filesystem::path bundledAssets(const std::string& bench);
 // them (naming the nearest and every scene there is).
 std::vector<std::filesystem::path> benchScenes(const std::filesystem::path& assets, const std::vector<std::string>& only,
                                                const std::string& bench);
+
+// --edge-length PX of the window benchmarks (play, edit): 0 when not given; InputError outside [0.5, 1000].
+double edgeLengthOption(const cli::Arguments& arguments);
+// A copy of the scene's folder in the temporary folder with `edge_length` replaced (a larger mesh
+// of the same drawings).
+std::filesystem::path sceneWithEdgeLength(const std::filesystem::path& file, double edgeLength, const std::string& bench);
 
 // One line of status on stderr, rewritten in place, when stderr is a terminal; "" clears it.
 void showStatus(const std::string& text);

@@ -66,19 +66,6 @@ double changeLatency(play::PlayerSession& session, play::PlayerWindow& window, d
   }
 }
 
-// A copy of the scene's folder in the temporary folder with `edge_length` replaced.
-std::filesystem::path withEdgeLength(const std::filesystem::path& file, double edgeLength) {
-  namespace fs = std::filesystem;
-  const fs::path dir = fs::temp_directory_path() / ("inbetween-bench-play-" + file.parent_path().filename().string());
-  fs::remove_all(dir);
-  fs::copy(file.parent_path(), dir, fs::copy_options::recursive);
-  std::ifstream in(file);
-  nlohmann::json scene = nlohmann::json::parse(in);
-  scene["edge_length"] = edgeLength;
-  std::ofstream(dir / "scene.json") << scene.dump(2);
-  return dir / "scene.json";
-}
-
 nlohmann::json benchScene(const std::filesystem::path& file, const play::PlayerWindowOptions& options, int frames, int changes) {
   cli::Progress progress;
   auto reloader = std::make_unique<play::SceneReloader>(file.string(), [&](const std::string& stage, double f) {
@@ -140,17 +127,10 @@ void run(const cli::Arguments& a, const BenchOutput& output) {
   const int changes = a.integer("changes", 8, 0, 1000);
   if (!std::getenv("DISPLAY") && !std::getenv("WAYLAND_DISPLAY"))
     throw InputError("bench play: no display (DISPLAY is not set); run it under xvfb-run -a");
-  double edgeLength = 0;
-  if (a.has("edge-length")) {
-    const std::string text = a.value("edge-length", "");
-    char* end = nullptr;
-    edgeLength = std::strtod(text.c_str(), &end);
-    if (text.empty() || *end != '\0' || !(edgeLength >= 0.5 && edgeLength <= 1000))
-      throw InputError("--edge-length: '" + text + "' is not a length in [0.5, 1000] px");
-  }
+  const double edgeLength = edgeLengthOption(a);
   for (const auto& file : files) {
     try {
-      nlohmann::json line = benchScene(edgeLength > 0 ? withEdgeLength(file, edgeLength) : file, options, frames, changes);
+      nlohmann::json line = benchScene(edgeLength > 0 ? sceneWithEdgeLength(file, edgeLength, "play") : file, options, frames, changes);
       line["scene"] = file.parent_path().filename().string();
       if (edgeLength > 0) line["edge_length"] = edgeLength;
       output.printLine(line);

@@ -121,7 +121,7 @@ void EditorView::update() {
   if (session_.generation() != sentGeneration_) {
     sentGeneration_ = session_.generation();
     if (!doc.problem()) {
-      player_.reloader().rebuildFromText(doc.text(), false);
+      expectedBuild_ = player_.reloader().rebuildFromText(doc.text(), false);
       optimizedSent_ = false;
       awaitingFrame_ = true;
       buildError_.clear();
@@ -372,7 +372,7 @@ bool EditorView::shortcut(int key, bool ctrl, bool shift) {
 }
 
 void EditorView::newMeshPresented() {
-  if (!awaitingFrame_ || session_.generation() != sentGeneration_) return;
+  if (!awaitingFrame_ || session_.generation() != sentGeneration_ || player_.scene().build < expectedBuild_) return;
   awaitingFrame_ = false;
   latencyMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - editTime_).count();
 }

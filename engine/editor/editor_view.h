@@ -63,8 +63,8 @@ class EditorView {
   // The unsaved-changes dialog; true once the user chose to close.
   bool closeDialog();
 
-  // The window presented a frame solved on a multimesh that arrived since the last edit: the edit's
-  // latency is measured here.
+  // The window presented a frame solved on the multimesh it plays now: the edit's latency is
+  // measured here, once that multimesh is of the latest edit (or later).
   void newMeshPresented();
   // From an edit to the first frame drawn with the multimesh it started, ms (the latest; -1: none yet).
   double lastEditLatencyMs() const { return latencyMs_; }
@@ -128,6 +128,7 @@ class EditorView {
   bool optimizedSent_ = true;
   std::chrono::steady_clock::time_point editTime_{};
   bool awaitingFrame_ = false;
+  int expectedBuild_ = 0;  // the reloader's request of the last edit's quick build
   double latencyMs_ = -1;
   std::string status_;
   bool statusError_ = false;

@@ -9,6 +9,9 @@
 
 #include <filesystem>
 #include <mutex>
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <unistd.h>
 #include <nlohmann/json.hpp>
 #include <thread>
 
@@ -17,6 +20,8 @@ namespace ib::play {
 namespace fs = std::filesystem;
 
 namespace {
+
+constexpr int kRebuildNice = 10;  // the rebuild thread's nice value (0 normal, 19 lowest)
 
 // What poll() compares: a file's modification time and size, or its absence.
 struct FileStamp {
@@ -131,7 +136,18 @@ struct Job {
   std::string path;
   std::optional<std::string> text;
   bool comesh = true;
+  int threads = 0;  // the build's most threads (0: all cores)
+  int id = 0;       // LoadedScene::build of what it loads
 };
+
+// Thrown from a build's progress callback when a newer edit makes it moot.
+struct BuildCancelled {};
+
+// An editor's quick build (the initial map) runs at normal priority: it is short and the edit
+// waits for it. Every other build runs below the window's and the solver's threads, taking the
+// time they leave, so the picture keeps its frame rate meanwhile (a Linux thread's nice value is
+// its own).
+bool urgent(const Job& job) { return job.text && !job.comesh; }
 
 // Loads the job's scene, keeping `last`'s multimesh, drawings and features when only fields that
 // do not shape the mesh changed and its drawings and stiffness image did not (null `last`: none).
@@ -147,13 +163,17 @@ Loaded load(const Job& job, const Loaded* last, const PipelineProgress& progress
       (last->optimized || !job.comesh)) {
     LoadedScene kept = *last->scene;
     kept.scene = std::move(scene);
+    kept.build = job.id;
     out.scene = std::make_shared<const LoadedScene>(std::move(kept));
     out.optimized = last->optimized;
   } else {
     SceneMultimeshOptions options;
     options.useCache = !job.text;
     options.comesh = job.comesh;
-    out.scene = std::make_shared<const LoadedScene>(built(std::move(scene), options, progress));
+    options.threads = job.threads;
+    LoadedScene fresh = built(std::move(scene), options, progress);
+    fresh.build = job.id;
+    out.scene = std::make_shared<const LoadedScene>(std::move(fresh));
     out.optimized = job.comesh;
   }
   return out;
@@ -178,22 +198,37 @@ struct SceneReloader::State {
   std::vector<FileStamp> stamps;          // watchedFiles as of the last build's start
   Loaded lastGood;                        // the last good load (taken or not)
   std::string buildingPath;               // the running build's scene file
+  bool runningOptimizedText = false;      // the running build is an editor's text with Comesh
   bool running = false;
   bool queued = false;                    // another build after the running one
   Job queuedJob;
   bool stopping = false;                  // the destructor waits: no queued build starts
+  bool cancel = false;                    // the running build stops at its next progress report
   std::shared_ptr<const LoadedScene> finished;  // a good build not yet taken
   std::string finishedPath;
   std::optional<std::string> error;       // a failed build's message not yet taken
   double progress = 1;
   std::string stage;
 
-  void start(Job job);
+  int start(Job job);  // numbers the job, then launch(); returns its number
+  void launch(Job job);  // on a new thread, or queued behind the running build
+  // A build queued behind one that ran at low priority, which needs the normal one: it waits for
+  // the caller's thread to start it on a thread of its own (a thread cannot lower its nice value
+  // again without privileges). The caller's thread only.
+  void launchHandedOff();
+  int nextId = 1;     // the caller's thread only
   void run(Job job);
   bool changed() const;
 };
 
-void SceneReloader::State::start(Job job) {
+int SceneReloader::State::start(Job job) {
+  job.id = nextId++;
+  const int id = job.id;
+  launch(std::move(job));
+  return id;
+}
+
+void SceneReloader::State::launch(Job job) {
   {
     std::lock_guard<std::mutex> lock(mutex);
     if (running) {
@@ -201,6 +236,7 @@ void SceneReloader::State::start(Job job) {
       queuedJob = std::move(job);
       return;
     }
+    queued = false;  // a handed-off job this one replaces
     running = true;
     buildingPath = job.path;
     progress = 0;
@@ -210,14 +246,28 @@ void SceneReloader::State::start(Job job) {
   thread = std::thread([this, job] { run(job); });
 }
 
+void SceneReloader::State::launchHandedOff() {
+  Job job;
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    if (running || !queued || stopping) return;
+    queued = false;
+    job = std::move(queuedJob);
+  }
+  launch(std::move(job));
+}
+
 void SceneReloader::State::run(Job job) {
+  bool lowered = false;  // this thread's nice value was raised
   for (;;) {
     const std::string path = job.path;
+    if (!urgent(job) && !lowered) lowered = setpriority(PRIO_PROCESS, static_cast<id_t>(syscall(SYS_gettid)), kRebuildNice) == 0;
     std::vector<std::string> files;
     Loaded last;
     {
       std::lock_guard<std::mutex> lock(mutex);
       buildingPath = path;
+      runningOptimizedText = job.text && job.comesh;
       files = path == watchedPath ? watchedFiles : std::vector<std::string>{path};
       last = lastGood;
     }
@@ -231,14 +281,21 @@ void SceneReloader::State::run(Job job) {
     try {
       result = load(job, &last, [this](const std::string& what, double fraction) {
         std::lock_guard<std::mutex> lock(mutex);
+        if (cancel) throw BuildCancelled{};
         stage = what;
         progress = fraction;
       });
+    } catch (const BuildCancelled&) {
+      message = "cancelled";
     } catch (const std::exception& e) {
       message = e.what();
     }
     std::lock_guard<std::mutex> lock(mutex);
-    if (result) {
+    const bool cancelled = cancel;
+    cancel = false;
+    if (cancelled) {
+      // Nothing to report: the queued build replaces it.
+    } else if (result) {
       const std::vector<std::string> newFiles = sceneFiles(result->scene->scene);
       std::vector<FileStamp> after;
       for (const std::string& file : newFiles) {
@@ -257,7 +314,7 @@ void SceneReloader::State::run(Job job) {
     } else {
       error = message.empty() ? path + ": cannot be loaded" : message;
     }
-    if (queued && !stopping) {
+    if (queued && !stopping && !(lowered && urgent(queuedJob))) {
       queued = false;
       job = std::move(queuedJob);
       progress = 0;
@@ -327,16 +384,21 @@ void SceneReloader::reloadNow() {
 
 void SceneReloader::open(const std::string& scenePath) { state_->start(Job{scenePath, std::nullopt, true}); }
 
-void SceneReloader::rebuildFromText(const std::string& text, bool comesh) {
+int SceneReloader::rebuildFromText(const std::string& text, bool comesh) {
   std::string watched;
   {
     std::lock_guard<std::mutex> lock(state_->mutex);
     watched = state_->watchedPath;
+    // An optimized build of an older text is moot: the new text's initial map goes first.
+    if (state_->running && state_->runningOptimizedText) state_->cancel = true;
   }
-  state_->start(Job{watched, text, comesh});
+  // The optimized build on one thread: the other cores keep the window drawing and the frames
+  // solving meanwhile.
+  return state_->start(Job{watched, text, comesh, 1});
 }
 
 bool SceneReloader::takeReloaded() {
+  state_->launchHandedOff();
   std::lock_guard<std::mutex> lock(state_->mutex);
   if (!state_->finished) return false;
   state_->current = std::move(state_->finished);
@@ -352,8 +414,9 @@ std::optional<std::string> SceneReloader::takeError() {
 }
 
 bool SceneReloader::busy() const {
+  state_->launchHandedOff();  // a caller waiting for the builds to end starts a handed-off one
   std::lock_guard<std::mutex> lock(state_->mutex);
-  return state_->running;
+  return state_->running || state_->queued;
 }
 
 double SceneReloader::progress() const {

@@ -20,6 +20,7 @@ struct LoadedScene {
                                              // beside the scene), else null
   std::vector<RgbaImage> drawings;           // [key]
   std::vector<int> features;                 // featureVertices(scene, *mesh)
+  int build = 0;                             // which request loaded it (SceneReloader::rebuildFromText); 0: the first
 };
 
 // Loads a scene: loadScene, sceneMultimesh (the cache when current), the drawings and the
@@ -55,8 +56,11 @@ class SceneReloader {
   // The watched scene as `text` says (an editor's document, not saved yet; drawings resolved from
   // the scene file's folder), built in the background without the cache beside the scene;
   // `comesh` false builds the initial map only (tens of milliseconds for the bundled scenes,
-  // against seconds with Comesh Optimization). Queued behind a running build, replacing one queued.
-  void rebuildFromText(const std::string& text, bool comesh);
+  // against seconds with Comesh Optimization), on one thread so that the window keeps drawing and
+  // the frames solving. Queued behind a running build, replacing one queued; a running optimized
+  // build of an earlier text is cancelled (it reports nothing). Returns the request's number, which
+  // the scene it loads carries (LoadedScene::build); requests are numbered in order.
+  int rebuildFromText(const std::string& text, bool comesh);
 
   // A finished rebuild becomes current() here (on the caller's thread); returns true once per
   // swap. References from current() stay valid until then; the meshes are shared, so a renderer

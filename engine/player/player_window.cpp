@@ -183,11 +183,9 @@ bool PlayerWindow::frame(RgbaImage* capture) {
   }
   dropped_.clear();
   if (editor_) editor_->update();
-  bool newMesh = false;
   if (session_.update(seconds)) {
     presenter_->setMesh(session_.renderMesh());
     applySceneSampling(false);
-    newMesh = true;
     if (!editor_) presenter_->window().setTitle("inbetween play - " + session_.scenePath());
   }
   if (editor_) {
@@ -253,10 +251,8 @@ bool PlayerWindow::frame(RgbaImage* capture) {
   RgbaImage shot;
   const bool wantShot = ui_.screenshotRequested && presenter_->canCapture();
   const bool presented = presenter_->present(draw, overlay, capture ? capture : wantShot ? &shot : nullptr);
-  if (presented && editor_ && (newMesh || meshPending_)) {
-    meshPending_ = !(shown && shown->x.rows() == session_.renderMesh().vertexCount);
-    if (!meshPending_) editor_->newMeshPresented();
-  }
+  if (presented && editor_ && editor_->awaitingFrame() && shown && shown->x.rows() == session_.renderMesh().vertexCount)
+    editor_->newMeshPresented();
   if (presented && wantShot) {
     ui_.screenshotRequested = false;
     writeScreenshot(capture ? *capture : shot);

@@ -98,7 +98,6 @@ class PlayerWindow {
   std::unique_ptr<render::DrawingSheet> sheet_;
   int sheetGeneration_ = -1;                         // the editor's drawings the sheet holds
   bool closeConfirmed_ = false;                      // the editor's unsaved-changes dialog said close
-  bool meshPending_ = false;                         // a new multimesh arrived, no frame of it shown yet
   std::string title_;                                // the window's title as last set (edit mode)
 };
 
