@@ -38,6 +38,12 @@ TEST_CASE("edit script: every kind of operation applies, and undoing them all re
     {"op": "remove_cut", "name": "slot"},
     {"op": "paint_stiffness", "key": "closed", "points": [[100, 100], [120, 100]], "radius": 10, "kappa": 2},
     {"op": "add_mark", "time": 0.25, "key": "open", "ease": "ease-out"},
+    {"op": "move_mark", "index": 1, "time": 0.3},
+    {"op": "set_mark_key", "index": 1, "key": "closed"},
+    {"op": "set_mark_ease", "index": 1, "ease": "ease-in"},
+    {"op": "set_reference", "key": "open"},
+    {"op": "set_drawing", "key": "open", "drawing": "./open.png"},
+    {"op": "set_cut_release", "cut": "mouth", "release": 0.4},
     {"op": "set", "name": "solver.tau", "value": 1e-4}
   ])";
   const std::vector<EditOp> read = readEditOps(ops, "ops.json");
@@ -49,6 +55,10 @@ TEST_CASE("edit script: every kind of operation applies, and undoing them all re
   const std::string edited = doc.text();
   CHECK(edited != original);
   CHECK(doc.scene().timeline.marks().size() == 4);
+  CHECK(doc.scene().timeline.marks()[1].time == Approx(0.3));
+  CHECK(doc.scene().timeline.marks()[1].label == "closed");
+  CHECK(doc.scene().reference == 1);
+  CHECK(doc.scene().keys[0].cuts[0].release == Approx(0.4));
   CHECK(doc.parameter("solver.tau") == Approx(1e-4));
   int undone = 0;
   while (doc.canUndo()) doc.undo(), ++undone;

@@ -6,6 +6,7 @@
 // the coloured arcs and labels, and are measured.
 #include "editor/editor_session.h"
 #include "editor/editor_view.h"
+#include "pipeline/cut_timing.h"
 #include "play_fixtures.h"
 #include "scene/scene.h"
 #include "scene/scene_document.h"
@@ -184,6 +185,38 @@ TEST_CASE("editor window: features clicked onto two keys' outlines, dragged, a c
   }
   CHECK(live.window->ui().width == kEditWidth);
   CHECK(view.title().find(" *") != std::string::npos);
+
+  // The timeline: the arch's mark (mark 2, at 1 s = frame 24) dragged to frame 30 in time, and
+  // the cut's release marker dragged: its release becomes the open keys' weight at the drop.
+  live.frames(10);
+  const play::TimelineEditing& timeline = live.window->ui().timelineEditing;
+  const int frameCount = live.session.transport().frameCount();
+  const auto xOf = [&](double frame) { return static_cast<int>(std::lround(timeline.x0 + frame / (frameCount - 1) * timeline.width)); };
+  live.send("mousemove --window " + std::to_string(xOf(24)) + " " + std::to_string(static_cast<int>(timeline.markY)) + " mousedown 1");
+  live.frames(3);
+  live.send("mousemove --window " + std::to_string(xOf(27)) + " " + std::to_string(static_cast<int>(timeline.markY)));
+  live.frames(3);
+  live.send("mousemove --window " + std::to_string(xOf(30)) + " " + std::to_string(static_cast<int>(timeline.markY)) + " mouseup 1");
+  live.frames(4);
+  CHECK(editing.document().scene().timeline.marks()[1].time == Approx(30.0 / 24));
+  CHECK(view.selectedMark() == 1);
+  // The release marker: wait for the rebuilt scene, then drag the first one (it lets go) 3 frames on.
+  REQUIRE(presentUntil(*live.window, [&] { return !live.session.reloader().busy() && !live.session.cutEvents().empty(); }, 60));
+  live.frames(3);
+  const CutEvent letGo = live.session.cutEvents().front();
+  live.send("mousemove --window " + std::to_string(xOf(letGo.frame)) + " " + std::to_string(static_cast<int>(timeline.cutY)) + " mousedown 1");
+  live.frames(3);
+  live.send("mousemove --window " + std::to_string(xOf(letGo.frame + 3)) + " " + std::to_string(static_cast<int>(timeline.cutY)) + " mouseup 1");
+  live.frames(4);
+  REQUIRE(editing.document().scene().keys[0].cuts[0].release);
+  CHECK(*editing.document().scene().keys[0].cuts[0].release ==
+        Approx(openWeight(live.session.scene().scene, "cut1", letGo.frame + 3)).margin(0.002));
+
+  // Esc with unsaved changes asks first: the window stays open.
+  live.send("key Escape");
+  live.frames(4);
+  CHECK_FALSE(live.window->shouldClose());
+  live.shot("editor-unsaved-dialog");
 
   // Ctrl+S writes the scene; it loads, meshes and renders.
   live.send("key ctrl+s");

@@ -121,6 +121,11 @@ DocumentMarks marksOf(const std::string& text) {
       if (s.contains("kappa") && s["kappa"].is_number()) stroke.kappa = s["kappa"];
       out.strokes.push_back(stroke);
     }
+  if (j.contains("timeline") && j["timeline"].is_object() && j["timeline"].contains("marks") && j["timeline"]["marks"].is_array())
+    for (const json& m : j["timeline"]["marks"]) {
+      const bool named = m.is_object() && m.contains("ease");
+      out.markEases.push_back(!named ? "linear" : m["ease"].is_string() ? m["ease"].get<std::string>() : m["ease"].dump());
+    }
   return out;
 }
 

@@ -38,6 +38,7 @@ struct DocumentMarks {
   std::vector<KeyMarks> keys;
   std::string reference;  // the reference key's name (the first key when the file does not say)
   std::vector<StrokeMark> strokes;
+  std::vector<std::string> markEases;  // [timeline mark]: its "ease" (a name, or JSON text), "linear" when none
   int keyIndex(const std::string& name) const;  // -1 when none
 };
 

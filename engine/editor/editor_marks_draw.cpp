@@ -45,6 +45,15 @@ void EditorView::marks() {
   for (int k = 0; k < static_cast<int>(views_.size()); ++k) keyMarks(k);
 }
 
+namespace {
+
+// Whether the last failed build's message names `what` in this key ("key "arch": feature "top" ...").
+bool named(const std::string& error, const std::string& key, const std::string& what) {
+  return !error.empty() && error.find("\"" + key + "\"") != std::string::npos && error.find("\"" + what + "\"") != std::string::npos;
+}
+
+}  // namespace
+
 void EditorView::keyMarks(int key) {
   ImDrawList* draw = ImGui::GetBackgroundDrawList();
   const play::PixelRect& r = views_[static_cast<size_t>(key)].rect;
@@ -79,7 +88,9 @@ void EditorView::keyMarks(int key) {
     polyline(c.points, kShadow, 5);
     polyline(c.points, kCut, 3);
     for (const Eigen::Vector2d& p : c.points) draw->AddCircleFilled(at(p), 3, kCut);
-    if (!c.points.empty()) label(draw, ImVec2(at(c.points.front()).x + 6, at(c.points.front()).y + 4), c.name + " (" + c.kind + ")", kCut);
+    if (!c.points.empty())
+      label(draw, ImVec2(at(c.points.front()).x + 6, at(c.points.front()).y + 4), c.name + " (" + c.kind + ")",
+            named(buildError_, marks.name, c.name) ? kWrongOrder : kCut);
   }
   if (cutKey_ == key && !cutPoints_.empty()) {
     Polyline preview = cutPoints_;
@@ -96,7 +107,7 @@ void EditorView::keyMarks(int key) {
     if (marks.radii.count(name)) draw->AddCircle(c, static_cast<float>(marks.radii.at(name) * scale), colour, 0, 2);
     draw->AddLine(ImVec2(c.x - 6, c.y), ImVec2(c.x + 6, c.y), colour, 2);
     draw->AddLine(ImVec2(c.x, c.y - 6), ImVec2(c.x, c.y + 6), colour, 2);
-    label(draw, ImVec2(c.x + 7, c.y + 3), name, colour);
+    label(draw, ImVec2(c.x + 7, c.y + 3), name, named(buildError_, marks.name, name) ? kWrongOrder : colour);
   }
   if (dragging_ && selectedInterior_ && selectedKey_ == key && !marks.interior.count(selected_)) {
     draw->AddCircle(at(dragAt_), static_cast<float>((hover_ - dragAt_).norm() * scale), kSelected, 0, 2);
@@ -110,7 +121,7 @@ void EditorView::keyMarks(int key) {
     const ImVec2 c = at(p);
     draw->AddCircleFilled(c, 6, kShadow);
     draw->AddCircleFilled(c, 4.5f, chosen ? kSelected : kFeature);
-    label(draw, ImVec2(c.x + 7, c.y - 16), name, chosen ? kSelected : kFeature);
+    label(draw, ImVec2(c.x + 7, c.y - 16), name, named(buildError_, marks.name, name) ? kWrongOrder : chosen ? kSelected : kFeature);
   }
 
   // The view's title: the key, its part, what to do here.

@@ -84,6 +84,7 @@ void EditorView::panel() {
     }
   }
   keysPanel();
+  markPanel();
 
   ImGui::Separator();
   if (!doc.canUndo()) ImGui::BeginDisabled();
@@ -106,7 +107,10 @@ void EditorView::keysPanel() {
   for (int k = 0; k < session_.keyCount(); ++k) {
     const std::string name = marks.keys[static_cast<size_t>(k)].name;
     ImGui::PushID(k);
-    ImGui::Text("%d  %s%s", k, name.c_str(), name == marks.reference ? " (reference)" : "");
+    if (ImGui::RadioButton("##reference", name == marks.reference) && name != marks.reference) run(edit::SetReference{name});
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("the reference key: its drawing is triangulated, stiffness is painted on it");
+    ImGui::SameLine();
+    if (ImGui::Selectable((std::to_string(k) + "  " + name).c_str(), selectedKey_ == k, 0, ImVec2(140, 0))) selectedKey_ = k;
     ImGui::SameLine(200);
     if (k == 0) ImGui::BeginDisabled();
     if (ImGui::ArrowButton("up", ImGuiDir_Left)) run(edit::MoveKey{name, k - 1});
@@ -124,6 +128,42 @@ void EditorView::keysPanel() {
   if (ImGui::Button("Add key") && addKeyBuffer_[0] != '\0') {
     dropped({addKeyBuffer_.data()});
     addKeyBuffer_[0] = '\0';
+  }
+  if (selectedKey_ >= 0 && selectedKey_ < session_.keyCount()) {
+    const std::string name = marks.keys[static_cast<size_t>(selectedKey_)].name;
+    ImGui::InputTextWithHint("##swap", marks.keys[static_cast<size_t>(selectedKey_)].drawing.c_str(), drawingBuffer_.data(),
+                             drawingBuffer_.size());
+    ImGui::SameLine();
+    if (ImGui::Button("Swap drawing") && drawingBuffer_[0] != '\0') {
+      run(edit::SetKeyDrawing{name, drawingBuffer_.data()});
+      drawingBuffer_[0] = '\0';
+    }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("draw key `%s` from another PNG (relative to the scene file)", name.c_str());
+  }
+}
+
+void EditorView::markPanel() {
+  const Timeline& timeline = player_.scene().scene.timeline;
+  if (selectedMark_ < 0 || selectedMark_ >= static_cast<int>(timeline.marks().size())) return;
+  ImGui::Separator();
+  const TimelineMark& mark = timeline.marks()[static_cast<size_t>(selectedMark_)];
+  ImGui::Text("mark %d at %.3f s", selectedMark_ + 1, mark.time);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("drag its diamond on the timeline to move it in time");
+  // Its key.
+  const DocumentMarks& marks = session_.marks();
+  int key = marks.keyIndex(mark.label);
+  std::string names;
+  for (const KeyMarks& k : marks.keys) names += k.name + '\0';
+  ImGui::SetNextItemWidth(160);
+  if (ImGui::Combo("key", &key, names.c_str()) && key >= 0) run(edit::SetMarkKey{selectedMark_, marks.keys[static_cast<size_t>(key)].name});
+  // Its ease into the next mark.
+  static const char* const kEases[] = {"linear", "ease-in", "ease-out", "ease-in-out", "hold"};
+  ImGui::SetNextItemWidth(160);
+  const std::string current = selectedMark_ < static_cast<int>(marks.markEases.size()) ? marks.markEases[static_cast<size_t>(selectedMark_)] : "";
+  if (ImGui::BeginCombo("ease", current.c_str())) {
+    for (const char* ease : kEases)
+      if (ImGui::Selectable(ease)) run(edit::SetMarkEase{selectedMark_, std::string("\"") + ease + "\""});
+    ImGui::EndCombo();
   }
 }
 

@@ -1,6 +1,7 @@
 #include "editor/editor_view.h"
 
 #include "core/error.h"
+#include "pipeline/cut_timing.h"
 
 #include <imgui.h>
 
@@ -369,6 +370,19 @@ bool EditorView::shortcut(int key, bool ctrl, bool shift) {
     return true;
   }
   return false;
+}
+
+void EditorView::selectMark(int mark) { selectedMark_ = mark; }
+
+void EditorView::moveMark(int mark, double time) {
+  selectedMark_ = mark;
+  run(edit::MoveMark{mark, time});
+}
+
+void EditorView::moveCut(const std::string& cut, int frame) {
+  // The open keys' weight at that frame, kept off 0 and 1 (where the cut would never let go).
+  const double release = std::clamp(openWeight(player_.scene().scene, cut, frame), 0.02, 0.98);
+  run(edit::SetCutRelease{cut, std::round(release * 1000) / 1000});
 }
 
 void EditorView::newMeshPresented() {

@@ -74,6 +74,13 @@ class EditorView {
   // Added keys from dropped PNG files.
   void dropped(const std::vector<std::string>& paths);
   ToolSettings& tools() { return tools_; }
+  // The scrubber in edit mode (play::TimelineEditing): a mark picked, a mark dropped at `time` (s),
+  // a cut's marker dropped on `frame` (its release becomes the open keys' weight there).
+  void selectMark(int mark);
+  void moveMark(int mark, double time);
+  void moveCut(const std::string& cut, int frame);
+  int selectedMark() const { return selectedMark_; }
+
   // Window pixel of key k's drawing point p, and the key's view (tests aim their clicks with it).
   Eigen::Vector2d toScreen(int key, const Eigen::Vector2d& p) const;
 
@@ -96,6 +103,7 @@ class EditorView {
   void finishCut();
   void keyMarks(int key);
   void keysPanel();
+  void markPanel();
 
   EditorSession& session_;
   play::PlayerSession& player_;
@@ -118,6 +126,8 @@ class EditorView {
   int paintKey_ = -1;
   Polyline paintPoints_;
   int lastEditedKey_ = -1;
+  int selectedMark_ = -1;
+  std::array<char, 512> drawingBuffer_{};  // another drawing for the selected key
   int hoverKey_ = -1;
   Eigen::Vector2d hover_ = Eigen::Vector2d::Zero();
   std::array<char, 64> renameBuffer_{};

@@ -31,6 +31,22 @@ struct Timings {
   void add(double frameSeconds, double solveMilliseconds);
 };
 
+// Edit mode's hold on the scrubber: the marks and the cuts' release markers are dragged in time
+// (editor/editor_view.h installs the callbacks; empty: the scrubber only scrubs).
+struct TimelineEditing {
+  std::function<void(int mark)> selectMark;                        // a mark was clicked
+  std::function<void(int mark, double time)> moveMark;             // a mark was dropped at `time` (s)
+  std::function<void(const std::string& cut, int frame)> moveCut;  // a cut's marker was dropped on `frame`
+  int selectedMark = -1;
+  int draggedMark = -1;          // the mark being dragged, or -1
+  std::string draggedCut;        // the cut whose marker is being dragged, or empty
+  int draggedCutFrame = -1;      // the frame that marker was on
+  double dragFrame = 0;          // where the dragged one is, in frames
+  // Where the scrubber was drawn in the last frame (window px): frame f sits at
+  // x0 + f / (frames - 1) * width; marks on the row at markY, cut markers on the row at cutY.
+  float x0 = 0, width = 1, markY = 0, cutY = 0;
+};
+
 struct UiState {
   ViewSettings view;
   ViewNavigation navigation;
@@ -44,6 +60,7 @@ struct UiState {
   int screenshots = 0;
   std::array<char, 64> typedValue{};  // a parameter's value being typed (the parameters panel's popup)
   std::function<void()> editPanel;  // edit mode: the Edit tab's contents (editor/editor_view.h); else empty
+  TimelineEditing timelineEditing;
 };
 
 // The layout: a side panel on the right, the transport bar along the bottom.

@@ -56,6 +56,9 @@ PlayerWindow::PlayerWindow(PlayerSession& session, const PlayerWindowOptions& op
   if (options.editor) {
     editor_ = std::make_unique<editor::EditorView>(*options.editor, session);
     ui_.editPanel = [this] { editor_->panel(); };
+    ui_.timelineEditing.selectMark = [this](int mark) { editor_->selectMark(mark); };
+    ui_.timelineEditing.moveMark = [this](int mark, double time) { editor_->moveMark(mark, time); };
+    ui_.timelineEditing.moveCut = [this](const std::string& cut, int frame) { editor_->moveCut(cut, frame); };
     sheetPool_ = vk::createCommandPool(presenter_->context());
     presenter_->window().setTitle(editor_->title());
   }
@@ -182,7 +185,10 @@ bool PlayerWindow::frame(RgbaImage* capture) {
     }
   }
   dropped_.clear();
-  if (editor_) editor_->update();
+  if (editor_) {
+    editor_->update();
+    ui_.timelineEditing.selectedMark = editor_->selectedMark();
+  }
   if (session_.update(seconds)) {
     presenter_->setMesh(session_.renderMesh());
     applySceneSampling(false);

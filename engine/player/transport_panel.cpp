@@ -26,8 +26,9 @@ constexpr ImU32 kGlue = IM_COL32(80, 200, 235, 255);    // a cut glues
 // green line, a tick every frame (or every 5th / 10th when crowded), the marks as diamonds
 // (keys yellow with their names, breakdowns blue), each cut's release (red) and glue (cyan) as a
 // line across the track with a triangle pointing down (lets go) or up (glues), its name on
-// hover, and the playhead. Click or drag to scrub.
-void scrubber(PlayerSession& session) {
+// hover, and the playhead. Click or drag to scrub. In edit mode (`editing` has callbacks) a press on
+// a mark or a cut's marker picks it up instead, and it is dropped on the nearest frame.
+void scrubber(PlayerSession& session, TimelineEditing& editing) {
   Transport& transport = session.transport();
   const Timeline& timeline = session.scene().scene.timeline;
   const int frames = transport.frameCount();
@@ -35,13 +36,45 @@ void scrubber(PlayerSession& session) {
   const float width = ImGui::GetContentRegionAvail().x, height = 42;
   ImGui::InvisibleButton("scrubber", ImVec2(width, height));
   const bool weights = session.weightsMode();
-  if (ImGui::IsItemActive() && !weights) {
+  const float mouseX = ImGui::GetIO().MousePos.x;
+  const auto frameAt = [&](float x) {
+    return std::clamp(std::round((x - origin.x - 6) / std::max(1.0f, width - 12) * std::max(1, frames - 1)), 0.0f, float(frames - 1));
+  };
+  const auto markFrame = [&](const TimelineMark& mark) { return (mark.time - timeline.start()) * timeline.fps(); };
+  if (editing.moveMark && ImGui::IsItemClicked() && !weights) {
+    // The nearest mark or cut marker within 7 px of the press, if any, is picked up.
+    float best = 7;
+    for (size_t i = 0; i < timeline.marks().size(); ++i) {
+      const float d = std::abs(origin.x + 6 + static_cast<float>(markFrame(timeline.marks()[i]) / std::max(1, frames - 1)) * (width - 12) - mouseX);
+      if (d <= best && ImGui::GetIO().MousePos.y < origin.y + 26) best = d, editing.draggedMark = static_cast<int>(i);
+    }
+    for (const CutEvent& event : session.cutEvents()) {
+      const float d = std::abs(origin.x + 6 + static_cast<float>(event.frame) / std::max(1, frames - 1) * (width - 12) - mouseX);
+      if (d <= best && ImGui::GetIO().MousePos.y >= origin.y + 26)
+        best = d, editing.draggedCut = event.cut, editing.draggedCutFrame = event.frame, editing.draggedMark = -1;
+    }
+    if (editing.draggedMark >= 0 && editing.selectMark) editing.selectMark(editing.draggedMark);
+  }
+  const bool dragging = editing.draggedMark >= 0 || !editing.draggedCut.empty();
+  if (dragging) {
+    editing.dragFrame = frameAt(mouseX);
+    if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) {  // dropped
+      if (editing.draggedMark >= 0) editing.moveMark(editing.draggedMark, timeline.start() + editing.dragFrame / timeline.fps());
+      else editing.moveCut(editing.draggedCut, static_cast<int>(editing.dragFrame));
+      editing.draggedMark = -1;
+      editing.draggedCut.clear();
+    }
+  } else if (ImGui::IsItemActive() && !weights) {
     const float u = std::clamp((ImGui::GetIO().MousePos.x - origin.x) / width, 0.0f, 1.0f);
     transport.pause();
     transport.goTo(static_cast<int>(std::lround(u * (frames - 1))));
   }
   ImDrawList* draw = ImGui::GetWindowDrawList();
   const float top = origin.y + 14, bottom = origin.y + height - 4;
+  editing.x0 = origin.x + 6;
+  editing.width = width - 12;
+  editing.markY = top + 9;
+  editing.cutY = bottom - 6;
   auto xOf = [&](double frame) { return origin.x + 6 + static_cast<float>(frame / std::max(1, frames - 1)) * (width - 12); };
   draw->AddRectFilled(ImVec2(origin.x, top), ImVec2(origin.x + width, bottom), kTrack, 3);
   draw->AddRectFilled(ImVec2(xOf(transport.in()) - 2, top), ImVec2(xOf(transport.out()) + 2, bottom), kRange, 3);
@@ -52,20 +85,25 @@ void scrubber(PlayerSession& session) {
   const int every = spacing >= 6 ? 1 : spacing >= 1.5f ? 5 : 10;
   for (int f = 0; f < frames; f += every)
     draw->AddLine(ImVec2(xOf(f), bottom - (f % (every * 5) == 0 ? 10 : 5)), ImVec2(xOf(f), bottom), kTicks);
-  for (const TimelineMark& mark : timeline.marks()) {
-    const double frame = (mark.time - timeline.start()) * timeline.fps();
+  for (size_t i = 0; i < timeline.marks().size(); ++i) {
+    const TimelineMark& mark = timeline.marks()[i];
+    const bool dragged = editing.draggedMark == static_cast<int>(i);
+    const double frame = dragged ? editing.dragFrame : markFrame(mark);
     if (frame > frames - 1 + 1e-9) continue;  // a looping timeline's end repeats its start
     const float x = xOf(frame), y = top + 9;
     const bool key = mark.label != "breakdown";
     const float r = key ? 6.0f : 4.5f;
     draw->AddQuadFilled(ImVec2(x, y - r), ImVec2(x + r, y), ImVec2(x, y + r), ImVec2(x - r, y), key ? kKeyMark : kBreakdown);
+    if (dragged || editing.selectedMark == static_cast<int>(i))
+      draw->AddQuad(ImVec2(x, y - r - 2), ImVec2(x + r + 2, y), ImVec2(x, y + r + 2), ImVec2(x - r - 2, y), IM_COL32(255, 255, 255, 255), 2);
     const float textWidth = ImGui::CalcTextSize(mark.label.c_str()).x;  // left of the mark where the track ends
     const float textX = x + r + 2 + textWidth > origin.x + width ? x - r - 2 - textWidth : x + r + 2;
     draw->AddText(ImVec2(textX, origin.y), key ? kKeyMark : kBreakdown, mark.label.c_str());
   }
   for (const CutEvent& event : session.cutEvents()) {
     if (event.frame > frames - 1) continue;
-    const float x = xOf(event.frame), y = bottom - 6;
+    const bool dragged = event.cut == editing.draggedCut && event.frame == editing.draggedCutFrame;
+    const float x = xOf(dragged ? editing.dragFrame : event.frame), y = bottom - 6;
     const ImU32 colour = event.glue ? kGlue : kRelease;
     draw->AddLine(ImVec2(x, top), ImVec2(x, bottom), colour, 2);
     if (event.glue) draw->AddTriangleFilled(ImVec2(x - 5, y + 4), ImVec2(x + 5, y + 4), ImVec2(x, y - 4), colour);
@@ -125,7 +163,7 @@ void transportPanel(PlayerSession& session, UiState& ui) {
   if (ImGui::SliderFloat("##speed", &speed, 0.1f, 4.0f, "speed %.2fx", ImGuiSliderFlags_Logarithmic)) transport.setSpeed(speed);
   if (ImGui::IsItemClicked(ImGuiMouseButton_Right)) transport.setSpeed(1);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("Playback speed, 0.1x to 4x (right-click: 1x)");
-  scrubber(session);
+  scrubber(session, ui.timelineEditing);
   ImGui::SetNextItemWidth(70);
   int in = transport.in(), out = transport.out();
   if (ImGui::DragInt("##in", &in, 0.2f, 0, transport.frameCount() - 1, "in %d")) transport.setRange(in, out);

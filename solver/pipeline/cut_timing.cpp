@@ -59,6 +59,17 @@ std::vector<CutRelease> cutReleases(const Scene& scene, const Multimesh& mesh) {
   return perTerm;
 }
 
+double openWeight(const Scene& scene, const std::string& cut, int frame) {
+  const Eigen::VectorXd w = scene.timeline.weights(scene.timeline.frameTime(frame));
+  double open = 0;
+  for (size_t k = 0; k < scene.keys.size() && static_cast<Eigen::Index>(k) < w.size(); ++k) {
+    bool closed = false;
+    for (const CutSpec& c : scene.keys[k].cuts) closed = closed || c.name == cut;
+    if (!closed) open += w(static_cast<Eigen::Index>(k));
+  }
+  return open;
+}
+
 std::vector<CutEvent> cutEvents(const Scene& scene) {
   std::vector<CutEvent> events;
   const CohesiveParams& params = scene.interpolation.cohesive;
@@ -67,19 +78,9 @@ std::vector<CutEvent> cutEvents(const Scene& scene) {
   const Timeline& timeline = scene.timeline;
   for (const auto& [name, timing] : own) {
     const double release = std::isnan(timing.release) ? params.release : timing.release;
-    std::vector<char> closed(scene.keys.size(), 0);
-    for (size_t k = 0; k < scene.keys.size(); ++k)
-      for (const CutSpec& cut : scene.keys[k].cuts) closed[k] = closed[k] || cut.name == name;
-    const auto openWeight = [&](int frame) {
-      const Eigen::VectorXd w = timeline.weights(timeline.frameTime(frame));
-      double open = 0;
-      for (Eigen::Index k = 0; k < w.size(); ++k)
-        if (!closed[static_cast<size_t>(k)]) open += w(k);
-      return open;
-    };
-    double before = openWeight(0);
+    double before = openWeight(scene, name, 0);
     for (int f = 1; f < timeline.frameCount(); ++f) {
-      const double now = openWeight(f);
+      const double now = openWeight(scene, name, f);
       if (before < release && now >= release) events.push_back({name, timeline.frameTime(f), f, false});
       if (before >= release && now < release) events.push_back({name, timeline.frameTime(f), f, true});
       before = now;

@@ -28,5 +28,9 @@ struct CutEvent {
 };
 // Under CutTiming::kRelease (none under kTau): every cut's events, in time order.
 std::vector<CutEvent> cutEvents(const Scene& scene);
+// The summed weight at timeline frame `frame` of the keys where `cut` is open (that do not draw
+// it): the cut lets go where this crosses its release, so dragging its marker to a frame sets the
+// release to this value there.
+double openWeight(const Scene& scene, const std::string& cut, int frame);
 
 }  // namespace ib

@@ -58,6 +58,8 @@ void applyEditScript(SceneDocument& doc, const std::vector<EditOp>& ops, const s
       if (const auto* added = std::get_if<edit::AddKey>(&op.edit))
         outlines.add(added->name, fs::path(added->drawing).is_absolute() ? added->drawing : (folder / added->drawing).string());
       if (const auto* removed = std::get_if<edit::RemoveKey>(&op.edit)) outlines.remove(removed->name);
+      if (const auto* swapped = std::get_if<edit::SetKeyDrawing>(&op.edit))
+        outlines.add(swapped->key, fs::path(swapped->drawing).is_absolute() ? swapped->drawing : (folder / swapped->drawing).string());
     } catch (const InputError& e) {
       const std::string message = e.what();
       throw InputError(message.rfind(where + ": operation", 0) == 0 ? message : which + message);

@@ -125,6 +125,25 @@ EditOp readOp(const Json& j, int index, const std::string& where) {
     edit::AddMark mark{r.number("time"), r.text("key")};
     if (r.has("ease")) mark.ease = j["ease"].dump();
     op.edit = mark;
+  } else if (o == "move_mark" || o == "set_mark_key" || o == "set_mark_ease") {
+    r.only({"index", o == "move_mark" ? "time" : o == "set_mark_key" ? "key" : "ease"});
+    const double index = r.number("index");
+    if (index < 0 || index != std::floor(index)) r.fail("index", "expected a mark's index in time order, from 0");
+    const int i = static_cast<int>(index);
+    if (o == "move_mark") op.edit = edit::MoveMark{i, r.number("time")};
+    else if (o == "set_mark_key") op.edit = edit::SetMarkKey{i, r.text("key")};
+    else op.edit = edit::SetMarkEase{i, r.has("ease") && !j["ease"].is_null() ? j["ease"].dump() : std::string()};
+  } else if (o == "set_reference") {
+    r.only({"key"});
+    op.edit = edit::SetReference{r.text("key")};
+  } else if (o == "set_drawing") {
+    r.only({"key", "drawing"});
+    op.edit = edit::SetKeyDrawing{r.text("key"), r.text("drawing")};
+  } else if (o == "set_cut_release") {
+    r.only({"cut", "release"});
+    std::optional<double> release;
+    if (r.has("release") && !j["release"].is_null()) release = r.number("release");
+    op.edit = edit::SetCutRelease{r.text("cut"), release};
   } else if (o == "set") {
     r.only({"name", "value"});
     if (!r.has("value") || !(j["value"].is_number() || j["value"].is_string() || j["value"].is_boolean()))
@@ -143,7 +162,8 @@ const std::vector<std::string>& editOpNames() {
   static const std::vector<std::string> names{
       "add_key", "remove_key", "add_feature", "move_feature", "remove_feature", "rename_feature",
       "add_interior_feature", "move_interior_feature", "remove_interior_feature", "add_cut", "remove_cut",
-      "paint_stiffness", "add_mark", "set"};
+      "paint_stiffness", "add_mark", "move_mark", "set_mark_key", "set_mark_ease", "set_reference", "set_drawing",
+      "set_cut_release", "set"};
   return names;
 }
 

@@ -144,6 +144,27 @@ void applyCutEdit(Json& root, const SceneEdit& edit) {
               throw InputError("key " + q(e.key) + " draws cut " + q(e.name) + " already: move its points instead");
             k["cuts"].push_back(Json{{"name", e.name}, {"kind", e.kind}, {"points", pointsJson(e.points)}});
           },
+          [&](const SetCutRelease& e) {
+            if (e.release && !(*e.release >= 0 && *e.release <= 1))
+              throw InputError("cut " + q(e.cut) + ": release " + std::to_string(*e.release) + " is not in [0, 1]");
+            int drawn = 0;
+            for (Json& k : keys(root)) {
+              if (!k.contains("cuts") || !k["cuts"].is_array()) continue;
+              const int at = indexNamed(k["cuts"], e.cut);
+              if (at < 0) continue;
+              Json& cut = k["cuts"][static_cast<size_t>(at)];
+              if (e.release) cut["release"] = std::round(*e.release * 1000) / 1000;
+              else cut.erase("release");
+              ++drawn;
+            }
+            if (drawn == 0) {
+              std::vector<std::string> names;
+              for (Json& k : keys(root))
+                if (k.contains("cuts") && k["cuts"].is_array())
+                  for (const Json& c : k["cuts"]) names.push_back(textOf(c, "name"));
+              notFound("cut", e.cut, names);
+            }
+          },
           [&](const RemoveCut& e) {
             int removed = 0;
             for (Json& k : keys(root)) {

@@ -127,6 +127,18 @@ void applyMarkEdit(Json& root, const SceneEdit& edit) {
             mark.erase("weights");
             mark["key"] = e.key;
           },
+          [&](const SetMarkEase& e) {
+            Json& list = marks(root);
+            checkMark(e.index, list);
+            Json& mark = list[static_cast<size_t>(e.index)];
+            if (e.ease.empty()) {
+              mark.erase("ease");
+              return;
+            }
+            Json ease = Json::parse(e.ease, nullptr, false);
+            if (ease.is_discarded()) throw InputError("timeline: mark " + std::to_string(e.index + 1) + "'s ease is not JSON: " + e.ease);
+            mark["ease"] = std::move(ease);
+          },
           [&](const SetParameter& e) {
             const ParameterSpec& spec = parameter(e.name);
             if (spec.field.empty())

@@ -165,6 +165,8 @@ void applyEdit(Json& root, const SceneEdit& edit) {
   if (!root.is_object()) throw InputError("the scene is not a JSON object");
   std::visit(Overloaded{[&](const AddKey&) { applyKeyEdit(root, edit); }, [&](const RemoveKey&) { applyKeyEdit(root, edit); },
                         [&](const RenameKey&) { applyKeyEdit(root, edit); }, [&](const MoveKey&) { applyKeyEdit(root, edit); },
+                        [&](const SetReference&) { applyKeyEdit(root, edit); },
+                        [&](const SetKeyDrawing&) { applyKeyEdit(root, edit); },
                         [&](const SetFeature&) { applyKeyEdit(root, edit); },
                         [&](const RemoveFeature&) { applyKeyEdit(root, edit); },
                         [&](const RenameFeature&) { applyKeyEdit(root, edit); },
@@ -174,6 +176,7 @@ void applyEdit(Json& root, const SceneEdit& edit) {
                         [&](const AddMark&) { applyMarkEdit(root, edit); }, [&](const MoveMark&) { applyMarkEdit(root, edit); },
                         [&](const RemoveMark&) { applyMarkEdit(root, edit); },
                         [&](const SetMarkKey&) { applyMarkEdit(root, edit); },
+                        [&](const SetMarkEase&) { applyMarkEdit(root, edit); },
                         [&](const SetParameter&) { applyMarkEdit(root, edit); },
                         [&](const ResetParameter&) { applyMarkEdit(root, edit); },
                         [&](const auto&) { applyCutEdit(root, edit); }},
@@ -221,6 +224,14 @@ void applyKeyEdit(Json& root, const SceneEdit& edit) {
             list.erase(static_cast<size_t>(from));
             list.insert(list.begin() + e.index, std::move(moved));
           },
+          [&](const SetReference& e) {
+            key(root, e.key);
+            root["reference"] = e.key;
+          },
+          [&](const SetKeyDrawing& e) {
+            if (e.drawing.empty()) throw InputError("key " + q(e.key) + " needs a drawing (a PNG, relative to the scene file)");
+            key(root, e.key)["drawing"] = e.drawing;
+          },
           [&](const SetFeature& e) {
             checkName(e.name, "feature", false);
             objectField(key(root, e.key), "features")[e.name] = pointJson(e.at);
@@ -256,6 +267,8 @@ std::string describe(const SceneEdit& edit) {
           [&](const RemoveKey& e) { out << "remove key " << q(e.name); },
           [&](const RenameKey& e) { out << "rename key " << q(e.from) << " to " << q(e.to); },
           [&](const MoveKey& e) { out << "move key " << q(e.name) << " to place " << e.index; },
+          [&](const SetReference& e) { out << "make key " << q(e.key) << " the reference"; },
+          [&](const SetKeyDrawing& e) { out << "draw key " << q(e.key) << " from " << e.drawing; },
           [&](const SetFeature& e) { out << "place feature " << q(e.name) << " in key " << q(e.key); },
           [&](const RemoveFeature& e) { out << "remove feature " << q(e.name); },
           [&](const RenameFeature& e) { out << "rename feature " << q(e.from) << " to " << q(e.to); },
@@ -282,6 +295,10 @@ std::string describe(const SceneEdit& edit) {
           [&](const MoveMark& e) { out << "move mark " << e.index + 1 << " to " << e.time << " s"; },
           [&](const RemoveMark& e) { out << "remove mark " << e.index + 1; },
           [&](const SetMarkKey& e) { out << "mark " << e.index + 1 << " shows key " << q(e.key); },
+          [&](const SetMarkEase& e) { out << "ease mark " << e.index + 1 << (e.ease.empty() ? " linearly" : " " + e.ease); },
+          [&](const SetCutRelease& e) {
+            out << "cut " << q(e.cut) << " lets go at " << (e.release ? std::to_string(*e.release) : std::string("the scene's release"));
+          },
           [&](const SetParameter& e) { out << "set " << e.name; },
           [&](const ResetParameter& e) { out << "reset " << e.name; }},
       edit);

@@ -21,6 +21,8 @@ struct AddKey { std::string name, drawing; int index = -1; };
 struct RemoveKey { std::string name; };          // its features, cuts and holes go with it; so do marks of it
 struct RenameKey { std::string from, to; };      // everywhere the scene names it
 struct MoveKey { std::string name; int index; };  // to that place in the key order
+struct SetReference { std::string key; };        // the key that is triangulated ("reference")
+struct SetKeyDrawing { std::string key, drawing; };  // another drawing for the key (a path as the file gives it)
 
 // Features on the outline. Set adds the feature to the key or moves it there.
 struct SetFeature { std::string key, name; Point at; };
@@ -72,6 +74,12 @@ struct AddMark {
 struct MoveMark { int index; double time; };
 struct RemoveMark { int index; };
 struct SetMarkKey { int index; std::string key; };
+// The mark's "ease" as JSON text, as AddMark's; empty: none (linear).
+struct SetMarkEase { int index; std::string ease; };
+
+// A cut's own "release" (in [0, 1]: the weight of the keys where it is open at which it lets go,
+// docs/scene-format.md "Cut timing"), written in every key that draws the cut; none: the scene's.
+struct SetCutRelease { std::string cut; std::optional<double> release; };
 
 // A parameter of the table (scene/parameters.h), by name, to a value; Reset removes the field
 // so that the default holds.
@@ -79,11 +87,11 @@ struct SetParameter { std::string name; double value; };
 struct ResetParameter { std::string name; };
 
 using SceneEdit =
-    std::variant<AddKey, RemoveKey, RenameKey, MoveKey, SetFeature, RemoveFeature, RenameFeature, SetInteriorFeature,
+    std::variant<AddKey, RemoveKey, RenameKey, MoveKey, SetReference, SetKeyDrawing, SetFeature, RemoveFeature, RenameFeature, SetInteriorFeature,
                  RemoveInteriorFeature, RenameInteriorFeature, AddCut, RemoveCut, RenameCut, MoveCutPoint, InsertCutPoint,
                  RemoveCutPoint, AddHole, MoveHole, RemoveHole, AddStiffnessRegion, AddStiffnessStroke, RemoveStiffness,
                  RenameStiffness, MoveStiffnessPoint, SetStiffnessKappa, ScaleStiffness, AddMark, MoveMark, RemoveMark, SetMarkKey,
-                 SetParameter, ResetParameter>;
+                 SetMarkEase, SetCutRelease, SetParameter, ResetParameter>;
 
 // What the edit does, for the undo list: `move feature "top" in key "arch"`.
 std::string describe(const SceneEdit& edit);
