@@ -3,6 +3,7 @@
 // keys when the order differs; what to place next; snapping in the editor as `edit --apply` does.
 #include "editor/editor_marks.h"
 #include "editor/editor_session.h"
+#include "editor/feature_suggestions.h"
 #include "scene/scene_document.h"
 
 #include <catch2/catch.hpp>
@@ -105,4 +106,26 @@ TEST_CASE("editor session: a point near a key's outline snaps onto it as edit --
   CHECK(session.freshName("top") == "top1");
   CHECK(session.arcs(0).size() == 1);  // one feature: the whole loop, uncoloured
   CHECK(session.orderProblem().empty());
+}
+
+TEST_CASE("editor suggestions: the square's four corners are proposed with the arch's outer corners, each point on its "
+          "key's outline") {
+  const fs::path folder = fs::temp_directory_path() / "inbetween-editor-suggest";
+  fs::remove_all(folder);
+  fs::create_directories(folder);
+  for (const char* png : {"square.png", "arch.png"})
+    fs::copy_file(fs::path(INBETWEEN_ASSETS) / "square-arch-notch" / png, folder / png);
+  std::ofstream(folder / "scene.json") << R"({"version": 1, "keys": [{"name": "square", "drawing": "square.png"},
+                                                                      {"name": "arch", "drawing": "arch.png"}]})";
+  EditorSession session(SceneDocument::load((folder / "scene.json").string()));
+  const std::vector<std::vector<Outline>> outlines = {session.outlines(0), session.outlines(1)};
+  const std::vector<FeatureSuggestion> suggested = suggestFeatures(session.marks(), outlines);
+  REQUIRE(suggested.size() == 4);
+  for (const FeatureSuggestion& s : suggested) {
+    REQUIRE(s.at.size() == 2);
+    CHECK(s.turn > 1.2);  // a square's corner turns 90 degrees
+    for (int k = 0; k < 2; ++k) CHECK((nearestOnOutlines(outlines[static_cast<size_t>(k)], s.at[static_cast<size_t>(k)]) - s.at[static_cast<size_t>(k)]).norm() < 1e-6);
+    // The square's corner and the arch's are the same corner: up-left goes with up-left.
+    CHECK((s.at[0] - Eigen::Vector2d(64, 64)).normalized().dot((s.at[1] - Eigen::Vector2d(64, 64)).normalized()) > 0.95);
+  }
 }

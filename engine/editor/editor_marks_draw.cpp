@@ -124,6 +124,15 @@ void EditorView::keyMarks(int key) {
     label(draw, ImVec2(c.x + 7, c.y - 16), name, named(buildError_, marks.name, name) ? kWrongOrder : chosen ? kSelected : kFeature);
   }
 
+  // Suggested features: hollow, numbered, until accepted or dropped.
+  for (size_t i = 0; i < suggestions_.size(); ++i) {
+    if (static_cast<size_t>(key) >= suggestions_[i].at.size()) continue;
+    const ImVec2 c = at(suggestions_[i].at[static_cast<size_t>(key)]);
+    draw->AddCircle(c, 7, kShadow, 0, 4);
+    draw->AddCircle(c, 7, kSelected, 0, 2);
+    label(draw, ImVec2(c.x + 9, c.y + 2), "?" + std::to_string(i + 1), kSelected);
+  }
+
   // The view's title: the key, its part, what to do here.
   std::string title = marks.name + (marks.name == session_.marks().reference ? "  (reference)" : "");
   const std::optional<MissingFeature> next = session_.nextMissing(lastEditedKey_);

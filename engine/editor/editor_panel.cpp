@@ -83,6 +83,7 @@ void EditorView::panel() {
       selected_.clear();
     }
   }
+  suggestionsPanel();
   keysPanel();
   markPanel();
 
@@ -98,6 +99,35 @@ void EditorView::panel() {
   if (doc.canRedo() && ImGui::IsItemHovered()) ImGui::SetTooltip("Ctrl+Shift+Z: %s", doc.redoLabel().c_str());
   ImGui::SameLine();
   if (ImGui::Button(doc.modified() ? "Save *" : "Save")) shortcut(83, true, false);
+}
+
+void EditorView::suggestionsPanel() {
+  ImGui::Separator();
+  if (ImGui::Button("Suggest features")) suggest();
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("propose features where every key's outline has a corresponding corner");
+  if (suggestions_.empty()) return;
+  ImGui::SameLine();
+  if (ImGui::Button("Accept all")) {
+    acceptAll();
+    return;
+  }
+  for (size_t i = 0; i < suggestions_.size(); ++i) {
+    ImGui::PushID(static_cast<int>(i));
+    ImGui::Text("?%zu  corner, %.0f deg", i + 1, suggestions_[i].turn * 180 / 3.14159265358979);
+    ImGui::SameLine(160);
+    if (ImGui::SmallButton("accept")) {
+      accept(i);
+      ImGui::PopID();
+      return;
+    }
+    ImGui::SameLine();
+    if (ImGui::SmallButton("drop")) {
+      suggestions_.erase(suggestions_.begin() + static_cast<std::ptrdiff_t>(i));
+      ImGui::PopID();
+      return;
+    }
+    ImGui::PopID();
+  }
 }
 
 void EditorView::keysPanel() {

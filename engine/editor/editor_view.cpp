@@ -372,6 +372,26 @@ bool EditorView::shortcut(int key, bool ctrl, bool shift) {
   return false;
 }
 
+void EditorView::suggest() {
+  std::vector<std::vector<Outline>> outlines;
+  for (int k = 0; k < session_.keyCount(); ++k) outlines.push_back(session_.outlines(k));
+  suggestions_ = suggestFeatures(session_.marks(), outlines);
+  report(suggestions_.empty() ? "no corners found that every key has" : std::to_string(suggestions_.size()) + " features suggested at corners every key has",
+         false);
+}
+
+void EditorView::accept(size_t suggestion) {
+  const FeatureSuggestion s = suggestions_.at(suggestion);
+  suggestions_.erase(suggestions_.begin() + static_cast<std::ptrdiff_t>(suggestion));
+  const std::string name = session_.freshName("corner");
+  for (int k = 0; k < session_.keyCount() && k < static_cast<int>(s.at.size()); ++k)
+    run(edit::SetFeature{session_.marks().keys[static_cast<size_t>(k)].name, name, s.at[static_cast<size_t>(k)]});
+}
+
+void EditorView::acceptAll() {
+  while (!suggestions_.empty()) accept(0);
+}
+
 void EditorView::selectMark(int mark) { selectedMark_ = mark; }
 
 void EditorView::moveMark(int mark, double time) {

@@ -9,6 +9,7 @@
 #pragma once
 
 #include "editor/editor_session.h"
+#include "editor/feature_suggestions.h"
 #include "player/player_session.h"
 #include "player/view_navigation.h"
 #include "renderers/drawing_sheet.h"
@@ -71,6 +72,11 @@ class EditorView {
   // Whether an edit's rebuild is still to be presented.
   bool awaitingFrame() const { return awaitingFrame_; }
   EditorSession& session() { return session_; }
+  // Proposes features at the corners every key's outline has (the Suggest button); then accept or
+  // drop each in the Edit tab.
+  void suggest();
+  const std::vector<FeatureSuggestion>& suggestions() const { return suggestions_; }
+  void acceptAll();
   // Added keys from dropped PNG files.
   void dropped(const std::vector<std::string>& paths);
   ToolSettings& tools() { return tools_; }
@@ -104,6 +110,8 @@ class EditorView {
   void keyMarks(int key);
   void keysPanel();
   void markPanel();
+  void suggestionsPanel();
+  void accept(size_t suggestion);
 
   EditorSession& session_;
   play::PlayerSession& player_;
@@ -127,6 +135,7 @@ class EditorView {
   Polyline paintPoints_;
   int lastEditedKey_ = -1;
   int selectedMark_ = -1;
+  std::vector<FeatureSuggestion> suggestions_;  // proposed by Suggest, until accepted or dropped
   std::array<char, 512> drawingBuffer_{};  // another drawing for the selected key
   int hoverKey_ = -1;
   Eigen::Vector2d hover_ = Eigen::Vector2d::Zero();
