@@ -13,6 +13,7 @@
 
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <string>
 
@@ -232,4 +233,94 @@ TEST_CASE("editor window: features clicked onto two keys' outlines, dragged, a c
   INFO(render.err);
   CHECK(render.code == 0);
   CHECK(fs::exists(frames / "frame_0000.png"));
+}
+
+TEST_CASE("editor window: the README's chomp made from its two drawings with clicks alone plays, its mouth open at the "
+          "open key and the eye carried with the disc", "[window]") {
+  // Screenshots for docs/editor.md and the README go to INBETWEEN_SHOTS when it is set.
+  const char* shots = std::getenv("INBETWEEN_SHOTS");
+  const fs::path folder = fs::temp_directory_path() / "inbetween-editor-chomp";
+  fs::remove_all(folder);
+  fs::create_directories(folder);
+  for (const char* png : {"closed.png", "open.png"})
+    fs::copy_file(fs::path(INBETWEEN_SOURCE_DIR) / "tests" / "topology" / "chomp" / png, folder / png);
+  const fs::path scene = folder / "scene.json";
+  REQUIRE(inbetween("new " + scene.string() + " " + (folder / "closed.png").string() + " " + (folder / "open.png").string() +
+                    " --no-window").code == 0);
+  editor::EditorSession editing(SceneDocument::load(scene.string()));
+  LiveWindow live(scene.string(), kEditWidth, 720, &editing);
+  editor::EditorView& view = *live.window->editor();
+  const auto shot = [&](const std::string& name) {
+    const RgbaImage image = live.shot("editor-chomp-" + name);
+    if (shots) writePng((fs::path(shots) / ("editor-" + name + ".png")).string(), image);
+  };
+  live.send("mousemove --window 600 600");
+  live.frames(3);
+  shot("new");
+
+  // `top` on both outlines (the second click answers the editor's prompt), renamed from f1.
+  live.send(at(view, 0, 128, 26) + " click 1");
+  live.frames(3);
+  live.send(at(view, 1, 129, 30) + " click 1");
+  live.frames(3);
+  REQUIRE_FALSE(editing.document().problem());
+  editing.apply(edit::RenameFeature{"f1", "top"});  // the panel's Rename (typing a name is not a coordinate)
+  // The mouth: a notch from the right edge to the centre in the closed key, then its three
+  // features in the open key as the editor asks for them: the lower lip, the upper lip, the tip.
+  live.send("key c");
+  live.frames(2);
+  live.send(at(view, 0, 229, 128) + " click 1");
+  live.frames(3);
+  live.send(at(view, 0, 128, 128) + " click 1");
+  live.frames(3);
+  live.send("key Return");
+  live.frames(3);
+  REQUIRE(editing.marks().keys[0].cuts.size() == 1);
+  editing.apply(edit::RenameCut{"cut1", "mouth"});
+  live.send("key q");
+  live.frames(2);
+  live.send(at(view, 1, 128, 128) + " mousemove_relative 0 0");  // the prompt is shown in the key's title
+  live.frames(3);
+  shot("prompt");
+  for (const auto& [name, x, y] : {std::tuple<const char*, double, double>{"mouth.left", 211, 186}, {"mouth.right", 211, 70}, {"mouth.tip", 127, 128}}) {
+    REQUIRE(editing.nextMissing(0));
+    CHECK(editing.nextMissing(0)->feature == name);
+    live.send(at(view, 1, x, y) + " click 1");
+    live.frames(3);
+  }
+  INFO((editing.document().problem() ? *editing.document().problem() : std::string()));
+  REQUIRE_FALSE(editing.document().problem());
+  CHECK(editing.orderProblem().empty());
+  // The eye: an interior feature with its disc dragged out, in both keys.
+  live.send("key d");
+  live.frames(2);
+  for (int k = 0; k < 2; ++k) {
+    live.send(at(view, k, 140, 70) + " mousedown 1");
+    live.frames(3);
+    live.send(at(view, k, 149, 70));
+    live.frames(3);
+    live.send("mouseup 1");
+    live.frames(3);
+  }
+  editing.apply(edit::RenameInteriorFeature{"detail1", "eye"});
+  REQUIRE(editing.marks().keys[1].interior.count("eye"));
+  live.send("key q mousemove --window 600 650");
+  REQUIRE(presentUntil(*live.window, [&] { return !live.session.reloader().busy() && !view.awaitingFrame(); }, 120));
+  live.frames(10);
+  shot("chomp");
+  live.send("key ctrl+s");
+  live.frames(3);
+  CHECK_FALSE(editing.document().modified());
+
+  // The saved scene renders; at the open key (frame 24 of the 2 s loop) the wedge is empty, and
+  // at the closed key it is filled.
+  const fs::path frames = folder / "frames";
+  const test::CommandRun render = inbetween("render " + scene.string() + " -o " + frames.string());
+  INFO(render.err);
+  REQUIRE(render.code == 0);
+  const RgbaImage open = readPng((frames / "frame_0024.png").string()), closed = readPng((frames / "frame_0000.png").string());
+  const auto alphaAt = [](const RgbaImage& image, int x, int y) { return image.pixels[4 * (static_cast<size_t>(y) * image.width + x) + 3]; };
+  CHECK(alphaAt(open, 190, 128) < 30);    // inside the wedge, between the lips
+  CHECK(alphaAt(closed, 190, 128) > 220);
+  CHECK(alphaAt(open, 60, 128) > 220);    // the back of the disc
 }

@@ -15,8 +15,7 @@ namespace {
 const char* const kToolNames[] = {"Features", "Cut", "Interior", "Stiffness"};
 const char* const kToolKeys[] = {"Q", "C", "D", "B"};
 const char* const kToolHelp[] = {
-    "Click on a key's outline to place a feature; drag one along the outline. Delete removes the\n"
-    "selected one from its key, Shift+Delete from every key.",
+    "Click on a key's outline to place a feature; drag one along the outline. Delete removes the selected one from its key, Shift+Delete from every key.",
     "Click the cut's points inside a key, double-click or press Enter to end it (Esc cancels).",
     "Press at a detail inside the shape; drag to give it a disc that moves with it as one piece.",
     "Paint stiffness on the reference key: kappa above 1 keeps a part rigid, below 1 lets it give."};

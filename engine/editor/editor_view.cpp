@@ -116,6 +116,12 @@ void EditorView::run(const edit::SceneEdit& edit) {
 
 void EditorView::update() {
   loadDrawings();
+  // A selection the document no longer has (undone, renamed, removed) goes.
+  if (selectedKey_ >= session_.keyCount()) selectedKey_ = -1, selected_.clear();
+  if (selectedKey_ >= 0 && !selected_.empty() && !dragging_) {
+    const KeyMarks& k = session_.marks().keys[static_cast<size_t>(selectedKey_)];
+    if (!(selectedInterior_ ? k.interior.count(selected_) : k.features.count(selected_))) selected_.clear();
+  }
   // A change: the initial map at once (tens of ms), the optimized multimesh once the edits pause.
   const SceneDocument& doc = session_.document();
   const auto now = std::chrono::steady_clock::now();
