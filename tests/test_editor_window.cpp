@@ -233,6 +233,17 @@ TEST_CASE("editor window: features clicked onto two keys' outlines, dragged, a c
   INFO(render.err);
   CHECK(render.code == 0);
   CHECK(fs::exists(frames / "frame_0000.png"));
+
+  // A PNG dropped on the window (GLFW's drop callback) becomes a key named after it; undo takes it back.
+  fs::copy_file(scene.parent_path() / "arch.png", scene.parent_path() / "arch2.png");
+  live.window->dropped({(scene.parent_path() / "arch2.png").string()});
+  live.frames(4);
+  REQUIRE(editing.keyCount() == 3);
+  CHECK(editing.marks().keys[2].name == "arch2");
+  CHECK(editing.nextMissing(1));  // its features are asked for
+  live.send("key ctrl+z");
+  live.frames(3);
+  CHECK(editing.keyCount() == 2);
 }
 
 TEST_CASE("editor window: the README's chomp made from its two drawings with clicks alone plays, its mouth open at the "

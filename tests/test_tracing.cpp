@@ -1,12 +1,15 @@
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/png_image.h"
+#include "meshing/trace_cache.h"
 #include "meshing/tracing.h"
 #include "testkit/drawings.h"
 
 #include <catch2/catch.hpp>
 #include <algorithm>
 #include <array>
+#include <chrono>
+#include <filesystem>
 #include <cmath>
 #include <random>
 
@@ -177,4 +180,27 @@ TEST_CASE("tracing: outlines moved onto the antialiased edge stay simple, also a
     ++traced;
   }
   CHECK(traced > 250);
+}
+
+TEST_CASE("trace cache: a drawing is traced once while its file, the options and the hole points are unchanged, and "
+          "again when one changes") {
+  const std::string dir = test::scratchDirectory("trace-cache");
+  const std::string file = dir + "/disc.png";
+  writePng(file, test::drawShape(128, 128, test::disc(64, 60, 40)));
+  TraceCache cache;
+  const std::vector<Outline> first = cache.traced(file, {}, {}).outlines;
+  CHECK(cache.traced(file, {}, {}).outlines.size() == first.size());
+  CHECK(cache.hits() == 1);
+  CHECK(cache.traced(file, {}, {}).size == std::array<int, 2>{128, 128});
+  CHECK(cache.hits() == 2);
+  TracingOptions other;
+  other.alphaThreshold = 64;
+  cache.traced(file, other, {});  // other options: traced again
+  CHECK(cache.hits() == 2);
+  // Another drawing under the same name (a larger disc, a later time): traced again, and it is the new one.
+  writePng(file, test::drawShape(128, 128, test::disc(64, 60, 50)));
+  std::filesystem::last_write_time(file, std::filesystem::last_write_time(file) + std::chrono::seconds(2));
+  const std::vector<Outline> redrawn = cache.traced(file, {}, {}).outlines;
+  CHECK(cache.hits() == 2);
+  CHECK(loopArea(redrawn[0].outer) == Approx(M_PI * 50 * 50).epsilon(0.01));
 }

@@ -42,6 +42,7 @@ ImU32 kappaColour(double kappa, int alpha) {
 }  // namespace
 
 void EditorView::marks() {
+  loadDrawings();  // an edit since update() (undo, a dropped key) may have changed the keys
   for (int k = 0; k < static_cast<int>(views_.size()); ++k) keyMarks(k);
 }
 

@@ -45,9 +45,16 @@ void EditorView::panel() {
 
   ImGui::Separator();
   // What to do next, and what is wrong, in words.
-  if (const std::optional<MissingFeature> next = session_.nextMissing(lastEditedKey_))
+  if (const std::optional<MissingFeature> next = session_.nextMissing(lastEditedKey_)) {
     ImGui::TextColored(ImVec4(1, 0.82f, 0, 1), "place `%s` in key `%s`%s", next->feature.c_str(), next->key.c_str(),
                        next->interior ? " (Interior tool)" : "");
+    // The rest still to place (a cut's features, a feature added to one key of several).
+    const std::vector<MissingFeature> all = missingFeatures(session_.marks(), lastEditedKey_);
+    std::string rest;
+    for (size_t i = 1; i < all.size() && i <= 6; ++i) rest += (i > 1 ? ", " : "then ") + all[i].feature + " in " + all[i].key;
+    if (all.size() > 7) rest += ", ...";
+    if (!rest.empty()) ImGui::TextDisabled("%s", rest.c_str());
+  }
   if (!session_.orderProblem().empty()) ImGui::TextColored(ImVec4(1, 0.35f, 0.35f, 1), "%s", session_.orderProblem().c_str());
   else if (doc.problem() && !session_.nextMissing(lastEditedKey_)) ImGui::TextColored(ImVec4(1, 0.35f, 0.35f, 1), "%s", doc.problem()->c_str());
   if (!buildError_.empty()) ImGui::TextColored(ImVec4(1, 0.35f, 0.35f, 1), "build: %s", buildError_.c_str());

@@ -143,6 +143,7 @@ void EditorView::update() {
 }
 
 bool EditorView::input() {
+  loadDrawings();  // a shortcut just before (undo) may have changed the keys
   const ImGuiIO& io = ImGui::GetIO();
   hoverKey_ = io.WantCaptureMouse ? -1 : viewUnder(io.MousePos.x, io.MousePos.y);
   // A gesture stays with its view until the button is released, wherever the pointer goes.

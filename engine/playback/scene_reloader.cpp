@@ -4,6 +4,7 @@
 #include "core/error.h"
 #include "multimesh/multimesh.h"
 #include "multimesh/multimesh_io.h"
+#include "meshing/trace_cache.h"
 #include "pipeline/key_drawings.h"
 #include "scene/parameters.h"
 
@@ -151,7 +152,7 @@ bool urgent(const Job& job) { return job.text && !job.comesh; }
 
 // Loads the job's scene, keeping `last`'s multimesh, drawings and features when only fields that
 // do not shape the mesh changed and its drawings and stiffness image did not (null `last`: none).
-Loaded load(const Job& job, const Loaded* last, const PipelineProgress& progress) {
+Loaded load(const Job& job, const Loaded* last, TraceCache* traces, const PipelineProgress& progress) {
   std::error_code error;
   if (!job.text && fs::is_directory(job.path, error)) loadScene(job.path);  // throws, naming the scene file inside
   const std::string text = job.text ? *job.text : readFile(job.path);
@@ -171,6 +172,7 @@ Loaded load(const Job& job, const Loaded* last, const PipelineProgress& progress
     options.useCache = !job.text;
     options.comesh = job.comesh;
     options.threads = job.threads;
+    options.traceCache = traces;
     LoadedScene fresh = built(std::move(scene), options, progress);
     fresh.build = job.id;
     out.scene = std::make_shared<const LoadedScene>(std::move(fresh));
@@ -199,6 +201,7 @@ struct SceneReloader::State {
   Loaded lastGood;                        // the last good load (taken or not)
   std::string buildingPath;               // the running build's scene file
   bool runningOptimizedText = false;      // the running build is an editor's text with Comesh
+  TraceCache traces;                      // the builds' thread only (one build at a time)
   bool running = false;
   bool queued = false;                    // another build after the running one
   Job queuedJob;
@@ -279,7 +282,7 @@ void SceneReloader::State::run(Job job) {
     std::optional<Loaded> result;
     std::string message;
     try {
-      result = load(job, &last, [this](const std::string& what, double fraction) {
+      result = load(job, &last, &traces, [this](const std::string& what, double fraction) {
         std::lock_guard<std::mutex> lock(mutex);
         if (cancel) throw BuildCancelled{};
         stage = what;
@@ -342,7 +345,7 @@ bool SceneReloader::State::changed() const {
 SceneReloader::SceneReloader(const std::string& scenePath, const PipelineProgress& progress)
     : state_(std::make_unique<State>()) {
   const FileStamp before = stamp(scenePath);
-  state_->lastGood = load(Job{scenePath, std::nullopt, true}, nullptr, progress);
+  state_->lastGood = load(Job{scenePath, std::nullopt, true}, nullptr, &state_->traces, progress);
   state_->current = state_->lastGood.scene;
   state_->currentPath = scenePath;
   state_->watchedPath = scenePath;
@@ -394,7 +397,7 @@ int SceneReloader::rebuildFromText(const std::string& text, bool comesh) {
   }
   // The optimized build on one thread: the other cores keep the window drawing and the frames
   // solving meanwhile.
-  return state_->start(Job{watched, text, comesh, 1});
+  return state_->start(Job{watched, text, comesh, comesh ? 1 : 0});
 }
 
 bool SceneReloader::takeReloaded() {

@@ -196,7 +196,6 @@ bool PlayerWindow::frame(RgbaImage* capture) {
   }
   if (editor_) {
     if (editor_->title() != title_) presenter_->window().setTitle(title_ = editor_->title());
-    updateSheet();
   }
 
   const VkExtent2D size = presenter_->window().framebufferSize();
@@ -245,6 +244,7 @@ bool PlayerWindow::frame(RgbaImage* capture) {
   draw.sampling = ui_.view.sampling;
   presenter_->setBackdrop(ui_.view.backdrop);
   render::Overlay overlay = imgui_->endFrame();
+  updateSheet();  // after the panels: this frame's edits may have changed the keys
   if (editor_ && sheet_) {  // the keys over the animation's upper part, the UI over both
     const std::vector<render::SheetView> views = editor_->sheetViews();
     const VkExtent2D extent = presenter_->extent();

@@ -1,5 +1,7 @@
 #include "meshing/multimesh_builder.h"
 
+#include "meshing/trace_cache.h"
+
 #include "core/error.h"
 #include "core/plane_geometry.h"
 #include "core/png_image.h"
@@ -222,10 +224,16 @@ BuiltScene buildMultimesh(const Scene& scene, const MultimeshBuildOptions& optio
   for (int k = 0; k < m; ++k) {
     if (options.progress) options.progress("tracing " + scene.keys[k].name, static_cast<double>(k) / m);
     try {
-      const RgbaImage image = readPng(scene.keys[k].drawing);
-      built.drawingSizes.push_back({image.width, image.height});
-      const ShapeMask mask = shapeMask(image, scene.tracing, scene.keys[k].holes, scene.keys[k].drawing);
-      built.outlines.push_back(traceOutlines(mask, scene.tracing, scene.keys[k].drawing));
+      if (options.traceCache) {
+        const TraceCache::Traced& traced = options.traceCache->traced(scene.keys[k].drawing, scene.tracing, scene.keys[k].holes);
+        built.drawingSizes.push_back(traced.size);
+        built.outlines.push_back(traced.outlines);
+      } else {
+        const RgbaImage image = readPng(scene.keys[k].drawing);
+        built.drawingSizes.push_back({image.width, image.height});
+        const ShapeMask mask = shapeMask(image, scene.tracing, scene.keys[k].holes, scene.keys[k].drawing);
+        built.outlines.push_back(traceOutlines(mask, scene.tracing, scene.keys[k].drawing));
+      }
     } catch (const InputError& e) {
       throw InputError(std::filesystem::path(scene.file).filename().string() + ": key " + inQuotes(scene.keys[k].name) +
                        ": drawing " + e.what());

@@ -18,6 +18,8 @@
 
 namespace ib {
 
+class TraceCache;
+
 struct MultimeshBuildOptions {
   KeyShapeOptions shape;
   UntangleOptions untangle;
@@ -26,6 +28,8 @@ struct MultimeshBuildOptions {
   int refinements = 2;
   // Called with a stage name and the fraction done, for progress display. Optional.
   std::function<void(const std::string& stage, double fraction)> progress;
+  // Traced drawings kept from earlier builds (meshing/trace_cache.h); null: every drawing is traced.
+  TraceCache* traceCache = nullptr;
 };
 
 // What a built scene is made of, for pictures and checks.

@@ -136,6 +136,7 @@ std::vector<std::string> comeshRegressions(const Scene& scene, const Multimesh& 
 SceneMultimesh build(const Scene& scene, const SceneMultimeshOptions& options, MonotoneProgress& progress) {
   const double buildShare = options.comesh ? 0.3 : 1.0;  // of the whole call; Comesh takes the rest
   MultimeshBuildOptions buildOptions;
+  buildOptions.traceCache = options.traceCache;
   buildOptions.progress = [&](const std::string& stage, double fraction) {
     progress(stage, buildShare * buildFraction(stage, fraction));
   };

@@ -17,6 +17,7 @@ struct Scene;         // scene/scene.h
 struct KeyShape;      // meshing/key_shape.h
 struct ComeshOptions; // comesh/comesh.h
 struct ComeshReport;  // comesh/comesh.h
+class TraceCache;     // meshing/trace_cache.h
 
 struct SceneMultimeshOptions {
   // A .ibmesh file to use instead of the cache or a build; its key count must be the scene's.
@@ -34,6 +35,9 @@ struct SceneMultimeshOptions {
   // When building: the most threads (untangling, Comesh); 0 = all cores. Fewer run while other
   // programs keep cores busy (core/thread_budget.h). Default 0.
   int threads = 0;
+  // When building: drawings traced by earlier builds, reused while unchanged (an editor's
+  // rebuilds); used by one build at a time. Default null: every drawing is traced.
+  TraceCache* traceCache = nullptr;
 };
 
 // Where the multimesh came from.
