@@ -149,6 +149,23 @@ TEST_CASE("editor window: features clicked onto two keys' outlines, dragged, a c
   REQUIRE(editing.marks().keys[1].interior.count("detail1"));
   CHECK(editing.marks().keys[0].radii.at("detail1") == Approx(6).margin(1.0));
 
+  // A second interior feature too near the square's outline: the rebuild fails, its message names
+  // the feature, the last good animation stays; undone, the next build clears the message.
+  REQUIRE(presentUntil(*live.window, [&] { return !live.session.reloader().busy() && !view.awaitingFrame(); }, 60));
+  const int builtVertices = live.session.renderMesh().vertexCount;
+  for (int k = 0; k < 2; ++k) {
+    live.send(at(view, k, k == 0 ? 31 : 23, 64) + " click 1");
+    live.frames(3);
+  }
+  REQUIRE(presentUntil(*live.window, [&] { return !view.buildError().empty(); }, 60));
+  CHECK(view.buildError().find("detail2") != std::string::npos);
+  CHECK(live.session.renderMesh().vertexCount == builtVertices);
+  live.send("key ctrl+z");
+  live.frames(2);
+  live.send("key ctrl+z");
+  REQUIRE(presentUntil(*live.window, [&] { return view.buildError().empty() && !live.session.reloader().busy(); }, 60));
+  CHECK_FALSE(editing.marks().keys[0].interior.count("detail2"));
+
   // A stiffness stroke painted across the square (the reference), then undone and redone.
   live.send("key b");
   live.frames(2);

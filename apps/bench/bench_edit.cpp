@@ -91,7 +91,7 @@ nlohmann::json benchScene(const std::filesystem::path& file, const play::PlayerW
     if (!to || (*to - at).norm() < 0.5) to = editing.snap(reference, at + Eigen::Vector2d(0, dx), 6);
     if (!to) throw std::runtime_error("bench edit: " + name + ": no outline point near feature " + feature);
     const Clock::time_point start = Clock::now();
-    editing.apply(edit::SetFeature{keyName, feature, *to});
+    view.apply(edit::SetFeature{keyName, feature, *to});
     Clock::time_point last = Clock::now();
     bool sent = false;
     for (;;) {

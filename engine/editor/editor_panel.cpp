@@ -94,15 +94,18 @@ void EditorView::panel() {
   markPanel();
 
   ImGui::Separator();
-  if (!doc.canUndo()) ImGui::BeginDisabled();
+  // Whether each can act, read once: the click changes it before the disabled scope ends.
+  const bool canUndo = doc.canUndo(), canRedo = doc.canRedo();
+  const std::string undoLabel = doc.undoLabel(), redoLabel = doc.redoLabel();
+  ImGui::BeginDisabled(!canUndo);
   if (ImGui::Button("Undo")) shortcut(90, true, false);
-  if (!doc.canUndo()) ImGui::EndDisabled();
-  if (doc.canUndo() && ImGui::IsItemHovered()) ImGui::SetTooltip("Ctrl+Z: %s", doc.undoLabel().c_str());
+  ImGui::EndDisabled();
+  if (canUndo && ImGui::IsItemHovered()) ImGui::SetTooltip("Ctrl+Z: %s", undoLabel.c_str());
   ImGui::SameLine();
-  if (!doc.canRedo()) ImGui::BeginDisabled();
+  ImGui::BeginDisabled(!canRedo);
   if (ImGui::Button("Redo")) shortcut(90, true, true);
-  if (!doc.canRedo()) ImGui::EndDisabled();
-  if (doc.canRedo() && ImGui::IsItemHovered()) ImGui::SetTooltip("Ctrl+Shift+Z: %s", doc.redoLabel().c_str());
+  ImGui::EndDisabled();
+  if (canRedo && ImGui::IsItemHovered()) ImGui::SetTooltip("Ctrl+Shift+Z: %s", redoLabel.c_str());
   ImGui::SameLine();
   if (ImGui::Button(doc.modified() ? "Save *" : "Save")) shortcut(83, true, false);
 }
@@ -148,15 +151,18 @@ void EditorView::keysPanel() {
     ImGui::SameLine();
     if (ImGui::Selectable((std::to_string(k) + "  " + name).c_str(), selectedKey_ == k, 0, ImVec2(140, 0))) selectedKey_ = k;
     ImGui::SameLine(200);
-    if (k == 0) ImGui::BeginDisabled();
+    const bool first = k == 0, last = k + 1 == session_.keyCount();  // read once: a move changes them
+    ImGui::BeginDisabled(first);
     if (ImGui::ArrowButton("up", ImGuiDir_Left)) run(edit::MoveKey{name, k - 1});
-    if (k == 0) ImGui::EndDisabled();
+    ImGui::EndDisabled();
     ImGui::SameLine();
-    if (k + 1 == session_.keyCount()) ImGui::BeginDisabled();
+    ImGui::BeginDisabled(last);
     if (ImGui::ArrowButton("down", ImGuiDir_Right)) run(edit::MoveKey{name, k + 1});
-    if (k + 1 == session_.keyCount()) ImGui::EndDisabled();
+    ImGui::EndDisabled();
     ImGui::SameLine();
+    ImGui::BeginDisabled(session_.keyCount() <= 1);  // a scene keeps at least one key
     if (ImGui::SmallButton("remove")) run(edit::RemoveKey{name});
+    ImGui::EndDisabled();
     ImGui::PopID();
   }
   ImGui::InputTextWithHint("##drawing", "drawing.png", addKeyBuffer_.data(), addKeyBuffer_.size());

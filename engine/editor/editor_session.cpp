@@ -11,7 +11,7 @@ namespace fs = std::filesystem;
 
 EditorSession::EditorSession(SceneDocument document)
     : document_(std::move(document)), marks_(marksOf(document_.json())), tracer_(document_.scene()) {
-  for (const KeySpec& key : document_.scene().keys) openedDrawings_[key.name] = key.drawing;
+  for (const KeySpec& key : document_.scene().keys) openedKeys_[key.name] = {key.drawing, key.holes};
   changed();
   generation_ = 0;
 }
@@ -44,10 +44,14 @@ const std::vector<Outline>& EditorSession::outlines(int key) {
     cached.emplace();
     tracedDrawing_[static_cast<size_t>(key)] = k.name + "\n" + k.drawing;
     try {
-      // A key of the scene as opened, with its drawing, keeps its hole points; others are traced plainly.
-      const auto opened = openedDrawings_.find(k.name);
-      if (opened == openedDrawings_.end() || fs::path(opened->second) != fs::path(drawingPath(key)))
-        tracer_.add(k.name, drawingPath(key));
+      // A key of the scene as opened, with its drawing, keeps its hole points; others are traced
+      // plainly. Registered again every time: a drawing swapped and swapped back is traced anew.
+      const auto opened = openedKeys_.find(k.name);
+      const std::string path = fs::path(drawingPath(key)).lexically_normal().string();
+      if (opened != openedKeys_.end() && fs::path(opened->second.first).lexically_normal().string() == path)
+        tracer_.add(k.name, path, opened->second.second);
+      else
+        tracer_.add(k.name, path);
       *cached = *tracer_.of(k.name);
     } catch (const InputError& e) {
       outlineErrors_[static_cast<size_t>(key)] = e.what();
@@ -108,10 +112,7 @@ void EditorSession::redo() {
   changed();
 }
 
-void EditorSession::save() {
-  document_.save();
-  ++generation_;  // the title changes
-}
+void EditorSession::save() { document_.save(); }
 
 std::string EditorSession::freshName(const std::string& prefix) const {
   std::set<std::string> used;

@@ -58,7 +58,7 @@ class EditorSession {
   SceneDocument document_;
   DocumentMarks marks_;
   KeyOutlines tracer_;
-  std::map<std::string, std::string> openedDrawings_;  // key -> drawing path, of the scene as opened
+  std::map<std::string, std::pair<std::string, Polyline>> openedKeys_;  // key -> drawing path, hole points, as opened
   std::vector<std::optional<std::vector<Outline>>> outlines_;  // [key]: traced, cached per drawing
   std::vector<std::string> outlineErrors_;
   std::vector<std::string> tracedDrawing_;  // [key]: the drawing its outline was traced from

@@ -71,6 +71,8 @@ class EditorView {
   double lastEditLatencyMs() const { return latencyMs_; }
   // Whether an edit's rebuild is still to be presented.
   bool awaitingFrame() const { return awaitingFrame_; }
+  // The last failed build's message, until a build succeeds; empty when the last one did.
+  const std::string& buildError() const { return buildError_; }
   EditorSession& session() { return session_; }
   // Proposes features at the corners every key's outline has (the Suggest button); then accept or
   // drop each in the Edit tab.
@@ -83,6 +85,8 @@ class EditorView {
   // The scrubber in edit mode (play::TimelineEditing): a mark picked, a mark dropped at `time` (s),
   // a cut's marker dropped on `frame` (its release becomes the open keys' weight there).
   void selectMark(int mark);
+  // An edit as the window's tools make it (timed for lastEditLatencyMs); InputError reported, not thrown.
+  void apply(const edit::SceneEdit& edit) { run(edit); }
   void moveMark(int mark, double time);
   void moveCut(const std::string& cut, int frame);
   int selectedMark() const { return selectedMark_; }
@@ -152,6 +156,7 @@ class EditorView {
   std::string status_;
   bool statusError_ = false;
   std::string buildError_;
+  size_t messagesRead_ = 0;  // of the player's messages
   bool closeAsked_ = false;
 };
 

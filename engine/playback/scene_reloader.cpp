@@ -1,5 +1,7 @@
 #include "playback/scene_reloader.h"
 
+#include "playback/scene_files.h"
+
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "multimesh/multimesh.h"
@@ -23,94 +25,6 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr int kRebuildNice = 10;  // the rebuild thread's nice value (0 normal, 19 lowest)
-
-// What poll() compares: a file's modification time and size, or its absence.
-struct FileStamp {
-  std::string path;
-  bool exists = false;
-  fs::file_time_type time{};
-  std::uintmax_t size = 0;
-
-  bool operator==(const FileStamp& other) const {
-    return path == other.path && exists == other.exists && time == other.time && size == other.size;
-  }
-};
-
-FileStamp stamp(const std::string& path) {
-  FileStamp s;
-  s.path = path;
-  std::error_code error;
-  s.time = fs::last_write_time(path, error);
-  if (error) return s;
-  s.size = fs::file_size(path, error);
-  s.exists = !error;
-  return s;
-}
-
-std::vector<FileStamp> stampAll(const std::vector<std::string>& paths) {
-  std::vector<FileStamp> out;
-  for (const std::string& path : paths) out.push_back(stamp(path));
-  return out;
-}
-
-// The files a scene is made from: the scene file, every drawing, the stiffness image.
-std::vector<std::string> sceneFiles(const Scene& scene) {
-  std::vector<std::string> files{scene.file};
-  for (const KeySpec& key : scene.keys) files.push_back(key.drawing);
-  if (!scene.stiffness.image.empty()) files.push_back(scene.stiffness.image);
-  return files;
-}
-
-// The files the multimesh is built from: every drawing and the stiffness image.
-std::vector<std::string> meshFiles(const Scene& scene) {
-  std::vector<std::string> files = sceneFiles(scene);
-  files.erase(files.begin());
-  return files;
-}
-
-// The scene file's fields that shape the multimesh, as canonical text: all but the timeline's
-// marks and the parameters whose change does not invalidate the multimesh (scene/parameters.h:
-// the solver's cohesive and non-overlap fields, the dynamics, sampling...; solver.kappa is painted
-// into the mesh). Two scenes with the same text, over unchanged drawings, have the same
-// multimesh, so saving tuned parameters reloads the scene without rebuilding it.
-std::string meshFields(const std::string& sceneText) {
-  nlohmann::json j = nlohmann::json::parse(sceneText, nullptr, false);
-  if (!j.is_object()) return sceneText;
-  j.erase("timeline");
-  for (const ParameterSpec& spec : parameterTable()) {
-    if (spec.field.empty() || spec.invalidates == Invalidates::kMultimesh) continue;
-    const size_t dot = spec.field.find('.');
-    if (dot == std::string::npos) {
-      j.erase(spec.field);
-      continue;
-    }
-    const std::string section = spec.field.substr(0, dot);
-    if (!j.contains(section) || !j[section].is_object()) continue;
-    j[section].erase(spec.field.substr(dot + 1));
-    if (j[section].empty()) j.erase(section);  // saving may add it
-  }
-  return j.dump();  // keys sorted: the order in the file does not matter
-}
-
-// NAME.initial.ibmesh beside the scene (what `inbetween mesh` writes next to the cache) when it
-// is at least as new as the scene's files and has the scene's key count; else null.
-std::shared_ptr<const Multimesh> initialBeside(const Scene& scene) {
-  const fs::path file = fs::path(cachedMeshPath(scene.file)).replace_extension(".initial.ibmesh");
-  std::error_code error;
-  const auto time = fs::last_write_time(file, error);
-  if (error) return nullptr;
-  for (const std::string& input : sceneFiles(scene)) {
-    const auto inputTime = fs::last_write_time(input, error);
-    if (error || inputTime > time) return nullptr;
-  }
-  try {
-    auto mesh = std::make_shared<const Multimesh>(loadMultimesh(file.string()));
-    if (mesh->keyCount() != static_cast<int>(scene.keys.size())) return nullptr;
-    return mesh;
-  } catch (const InputError&) {
-    return nullptr;  // optional: a display aid, not worth failing the scene for
-  }
-}
 
 LoadedScene built(Scene scene, const SceneMultimeshOptions& options, const PipelineProgress& progress) {
   LoadedScene out;
@@ -239,9 +153,13 @@ void SceneReloader::State::launch(Job job) {
       queuedJob = std::move(job);
       return;
     }
-    queued = false;  // a handed-off job this one replaces
+    if (queued) {  // a handed-off job waits: it runs first, this one after it
+      std::swap(job, queuedJob);
+    }
     running = true;
     buildingPath = job.path;
+    runningOptimizedText = job.text && job.comesh;
+    cancel = false;
     progress = 0;
     stage = "loading";
   }
@@ -320,11 +238,13 @@ void SceneReloader::State::run(Job job) {
     if (queued && !stopping && !(lowered && urgent(queuedJob))) {
       queued = false;
       job = std::move(queuedJob);
+      runningOptimizedText = job.text && job.comesh;  // under the lock, before a rebuildFromText can look
       progress = 0;
       stage = "loading";
       continue;
     }
     running = false;
+    runningOptimizedText = false;
     progress = 1;
     stage.clear();
     return;
@@ -358,6 +278,7 @@ SceneReloader::~SceneReloader() {
     std::lock_guard<std::mutex> lock(state_->mutex);
     state_->stopping = true;
     state_->queued = false;
+    state_->cancel = true;  // a running build stops at its next progress report
   }
   if (state_->thread.joinable()) state_->thread.join();
 }

@@ -34,9 +34,8 @@ class SceneReloader {
   // `progress` is called during this first load only; background rebuilds report through
   // progress() and stage().
   explicit SceneReloader(const std::string& scenePath, const PipelineProgress& progress = nullptr);
-  // Joins the rebuild thread: nothing long is cancelled, so this waits for at most one rebuild in
-  // progress (a build with Comesh Optimization: seconds for the bundled scenes, up to minutes for
-  // large drawings). A restart queued behind it is dropped.
+  // Cancels the running rebuild at its next progress report (Comesh reports every outer
+  // iteration; tracing and mapping between keys) and joins its thread. A build queued is dropped.
   ~SceneReloader();
   SceneReloader(const SceneReloader&) = delete;
   SceneReloader& operator=(const SceneReloader&) = delete;
@@ -54,12 +53,14 @@ class SceneReloader {
   void reloadNow();                          // the same, unconditionally (e.g. a dropped file: see open())
   void open(const std::string& scenePath);   // a different scene, loaded in the background
   // The watched scene as `text` says (an editor's document, not saved yet; drawings resolved from
-  // the scene file's folder), built in the background without the cache beside the scene;
-  // `comesh` false builds the initial map only (tens of milliseconds for the bundled scenes,
-  // against seconds with Comesh Optimization), on one thread so that the window keeps drawing and
-  // the frames solving. Queued behind a running build, replacing one queued; a running optimized
-  // build of an earlier text is cancelled (it reports nothing). Returns the request's number, which
-  // the scene it loads carries (LoadedScene::build); requests are numbered in order.
+  // the scene file's folder), built in the background without the cache beside the scene, with
+  // drawings that did not change since an earlier build not traced again. `comesh` false builds
+  // the initial map only (tens to hundreds of milliseconds for the bundled scenes, against
+  // seconds with Comesh Optimization), on every core at normal priority: an edit waits for it.
+  // `comesh` true runs on one thread at a lower priority, so the window keeps drawing and the
+  // frames solving. Queued behind a running build, replacing one queued; a running optimized
+  // build of an earlier text is cancelled (it reports nothing). Returns the request's number,
+  // which the scene it loads carries (LoadedScene::build); requests are numbered in order.
   int rebuildFromText(const std::string& text, bool comesh);
 
   // A finished rebuild becomes current() here (on the caller's thread); returns true once per

@@ -42,6 +42,7 @@ struct TimelineEditing {
   std::string draggedCut;        // the cut whose marker is being dragged, or empty
   int draggedCutFrame = -1;      // the frame that marker was on
   double dragFrame = 0;          // where the dragged one is, in frames
+  float pressX = 0;              // window px where it was picked up: a click that does not move changes nothing
   // Where the scrubber was drawn in the last frame (window px): frame f sits at
   // x0 + f / (frames - 1) * width; marks on the row at markY, cut markers on the row at cutY.
   float x0 = 0, width = 1, markY = 0, cutY = 0;

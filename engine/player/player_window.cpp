@@ -70,9 +70,10 @@ void PlayerWindow::updateSheet() {
   sheet_.reset();
   const render::OverlayTarget target = presenter_->overlayTarget();
   try {
-    sheet_ = std::make_unique<render::DrawingSheet>(presenter_->context(), sheetPool_.get(), editor_->drawings(), target.renderPass,
-                                                     target.samples);
-  } catch (const vk::VulkanError& e) {
+    if (!editor_->drawings().empty())
+      sheet_ = std::make_unique<render::DrawingSheet>(presenter_->context(), sheetPool_.get(), editor_->drawings(),
+                                                       target.renderPass, target.samples);
+  } catch (const std::exception& e) {  // a drawing larger than the device's images: the views stay empty
     session_.messages().push_back({std::string("cannot show the drawings: ") + e.what(), true});
   }
   sheetGeneration_ = editor_->drawingsGeneration();

@@ -54,13 +54,15 @@ void scrubber(PlayerSession& session, TimelineEditing& editing) {
         best = d, editing.draggedCut = event.cut, editing.draggedCutFrame = event.frame, editing.draggedMark = -1;
     }
     if (editing.draggedMark >= 0 && editing.selectMark) editing.selectMark(editing.draggedMark);
+    editing.pressX = mouseX;
   }
   const bool dragging = editing.draggedMark >= 0 || !editing.draggedCut.empty();
   if (dragging) {
     editing.dragFrame = frameAt(mouseX);
-    if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) {  // dropped
-      if (editing.draggedMark >= 0) editing.moveMark(editing.draggedMark, timeline.start() + editing.dragFrame / timeline.fps());
-      else editing.moveCut(editing.draggedCut, static_cast<int>(editing.dragFrame));
+    if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) {  // dropped; a click that did not move only selects
+      const bool moved = std::abs(mouseX - editing.pressX) > 3;
+      if (moved && editing.draggedMark >= 0) editing.moveMark(editing.draggedMark, timeline.start() + editing.dragFrame / timeline.fps());
+      else if (moved && !editing.draggedCut.empty()) editing.moveCut(editing.draggedCut, static_cast<int>(editing.dragFrame));
       editing.draggedMark = -1;
       editing.draggedCut.clear();
     }

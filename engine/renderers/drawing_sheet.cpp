@@ -57,7 +57,7 @@ void DrawingSheet::record(VkCommandBuffer cmd, VkExtent2D extent, const std::vec
     vkCmdDraw(cmd, 6, 1, 0, 0);
   };
   for (const SheetView& v : views) {
-    if (v.key < 0 || v.key >= keyCount()) throw std::invalid_argument("drawing sheet: no key " + std::to_string(v.key));
+    if (v.key < 0 || v.key >= keyCount()) continue;  // a key added since the sheet was made: drawn from the next frame
     // The scissor within the target (Vulkan wants it non-negative and inside).
     const int x0 = std::clamp(v.scissor[0], 0, static_cast<int>(extent.width));
     const int y0 = std::clamp(v.scissor[1], 0, static_cast<int>(extent.height));

@@ -31,7 +31,7 @@ class DrawingSheet {
                VkRenderPass pass, VkSampleCountFlagBits samples);
 
   // Records every view into `cmd`, inside a begun render pass of `extent` pixels; leaves the
-  // scissor set to the whole target. Views with an empty scissor are skipped.
+  // scissor set to the whole target. Views with an empty scissor or a key it does not hold are skipped.
   void record(VkCommandBuffer cmd, VkExtent2D extent, const std::vector<SheetView>& views, Sampling sampling) const;
 
   int keyCount() const { return static_cast<int>(sizes_.size()); }

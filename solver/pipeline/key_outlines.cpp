@@ -11,8 +11,8 @@ KeyOutlines::KeyOutlines(const Scene& scene) : tracing_(scene.tracing) {
   for (const KeySpec& key : scene.keys) keys_[key.name] = {key.drawing, key.holes};
 }
 
-void KeyOutlines::add(const std::string& key, const std::string& drawing) {
-  keys_[key] = {drawing, {}};
+void KeyOutlines::add(const std::string& key, const std::string& drawing, const Polyline& holes) {
+  keys_[key] = {drawing, holes};
   traced_.erase(key);
 }
 

@@ -17,8 +17,9 @@ class KeyOutlines {
  public:
   // The scene's keys (drawing paths as the scene resolved them) and its tracing options.
   explicit KeyOutlines(const Scene& scene);
-  // A key added since (no hole points), or one whose drawing changed: traced again on next use.
-  void add(const std::string& key, const std::string& drawing);
+  // A key added since, or one whose drawing changed (with its hole points, if any): traced again
+  // on next use.
+  void add(const std::string& key, const std::string& drawing, const Polyline& holes = {});
   void remove(const std::string& key);
   // The key's outlines; nullptr for a key it does not know. InputError when its drawing cannot be
   // read or has no shape.
