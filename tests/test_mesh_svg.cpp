@@ -56,15 +56,15 @@ TEST_CASE("mesh svg: every feature label's estimated box lies within the viewBox
   REQUIRE(std::regex_search(svg, m, std::regex("viewBox=\"([-0-9.]+) ([-0-9.]+) ([-0-9.]+) ([-0-9.]+)\"")));
   const double vx = std::stod(m[1]), vy = std::stod(m[2]), vw = std::stod(m[3]), vh = std::stod(m[4]);
   INFO("viewBox " << vx << ' ' << vy << ' ' << vw << ' ' << vh);
-  // The drawing keeps its place and size, at one user unit a pixel.
+  // The drawing keeps its place and size, at one user unit a pixel, shown at a whole multiple.
   CHECK(vx <= 0);
   CHECK(vy <= 0);
   CHECK(vx + vw >= scene.width);
   CHECK(vy + vh >= scene.height);
   REQUIRE(std::regex_search(svg, m, std::regex("<svg [^>]* width=\"([0-9.]+)\" height=\"([0-9.]+)\"")));
-  CHECK(std::stod(m[1]) == vw);
-  CHECK(std::stod(m[2]) == vh);
-  CHECK(svg.find("<image width=\"200\" height=\"120\"") != std::string::npos);
+  CHECK(std::stod(m[1]) == 4 * vw);  // 200 x 120 shown at 4x: 800 px wide, at least kShownPixels
+  CHECK(std::stod(m[2]) == 4 * vh);
+  CHECK(svg.find("<image width=\"200\" height=\"120\" opacity=\"0.6\" style=\"image-rendering:pixelated\"") != std::string::npos);
 
   const std::regex text("<text ([^>]*)>([^<]*)</text>");
   int labels = 0;
@@ -101,4 +101,14 @@ TEST_CASE("mesh svg: interior features are labelled dots, those with a radius in
   CHECK(circles[0][0] == 60);
   CHECK(circles[0][1] == 50);
   CHECK(circles[0][2] == 12);
+}
+
+TEST_CASE("mesh svg: a sprite is shown at a whole multiple of its size, its larger side at least 768 px, and large "
+          "drawings at their own size") {
+  CHECK(svgScale(100, 96) == 8);
+  CHECK(svgScale(16, 16) == 16);  // at most 16x
+  CHECK(svgScale(768, 100) == 1);
+  CHECK(svgScale(2048, 1536) == 1);
+  CHECK(svgScale(300, 500) == 2);
+  for (int side = 8; side <= 1024; side += 7) CHECK((svgScale(side, side) * side >= kShownPixels || svgScale(side, side) == 16));
 }

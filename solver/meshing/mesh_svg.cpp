@@ -50,6 +50,11 @@ double advance(unsigned char c) {
 
 }  // namespace
 
+int svgScale(int width, int height) {
+  const int larger = std::max(1, std::max(width, height));
+  return std::clamp((kShownPixels + larger - 1) / larger, 1, 16);
+}
+
 TextBox estimatedTextBox(const std::string& text, double x, double y, double fontSize, bool anchorEnd) {
   double em = 0;
   for (unsigned char c : text)
@@ -61,7 +66,11 @@ TextBox estimatedTextBox(const std::string& text, double x, double y, double fon
 std::string meshSvg(const Multimesh& mesh, int key, const KeyShape& shape, const std::string& drawingPng, int width,
                     int height, const std::vector<InteriorMark>& interior) {
   const Eigen::MatrixX2d x = mesh.keyPositions(key);
-  const double stroke = std::max(0.15, std::max(width, height) / 1500.0);  // px
+  // Shown at a whole multiple of the drawing's size so that its larger side is at least
+  // kShownPixels on screen (a 100 px sprite at 8x, its pixels crisp), with lines and labels sized
+  // for the picture as shown: 1/1500 of the drawing, at least 0.15 screen px.
+  const int scale = svgScale(width, height);
+  const double stroke = std::max(0.15 / scale, std::max(width, height) / 1500.0);  // drawing px
   const double radius = 6 * stroke, font = 40 * stroke;
   // The dots and labels first, so the viewBox can take them in. Labels point away from the middle
   // of the mesh, so features on opposite sides do not collide.
@@ -97,14 +106,16 @@ std::string meshSvg(const Multimesh& mesh, int key, const KeyShape& shape, const
                << 4 * stroke << "\"/>\n";
     mark(m.name, m.at);
   }
-  // Whole pixels, one user unit a pixel, so the drawing shows at its own size.
-  const long x0 = std::lround(std::floor(bounds.x0)), y0 = std::lround(std::floor(bounds.y0));
-  const long w = std::lround(std::ceil(bounds.x1)) - x0, h = std::lround(std::ceil(bounds.y1)) - y0;
+  // Whole pixels, one user unit a drawing pixel, shown `scale` screen pixels each.
+  // (0.01 px of slack: a label's box computed again from its printed position may round outwards.)
+  const long x0 = std::lround(std::floor(bounds.x0 - 0.01)), y0 = std::lround(std::floor(bounds.y0 - 0.01));
+  const long w = std::lround(std::ceil(bounds.x1 + 0.01)) - x0, h = std::lround(std::ceil(bounds.y1 + 0.01)) - y0;
   std::ostringstream svg;
   svg.precision(6);
   svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"" << x0 << ' ' << y0 << ' ' << w << ' ' << h
-      << "\" width=\"" << w << "\" height=\"" << h << "\">\n";
-  svg << "<image width=\"" << width << "\" height=\"" << height << "\" opacity=\"0.6\" href=\"data:image/png;base64,"
+      << "\" width=\"" << w * scale << "\" height=\"" << h * scale << "\">\n";
+  svg << "<image width=\"" << width << "\" height=\"" << height << "\" opacity=\"0.6\""
+      << (scale > 1 ? " style=\"image-rendering:pixelated\"" : "") << " href=\"data:image/png;base64,"
       << base64(drawingPng) << "\"/>\n";
   svg << "<path fill=\"none\" stroke=\"#1f5fbf\" stroke-width=\"" << stroke << "\" stroke-linejoin=\"round\" d=\"";
   for (const Triangle& t : mesh.triangles())

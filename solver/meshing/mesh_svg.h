@@ -32,7 +32,14 @@ struct InteriorMark {
   double radius = 0;                             // px; 0: a plain point
 };
 
-// drawingPng: the drawing's PNG bytes; width, height: its size in pixels.
+// Screen pixels the picture's larger side is shown at, at least (drawings smaller than this are
+// shown at a whole multiple of their size, at most 16x).
+constexpr int kShownPixels = 768;
+// The whole multiple a width x height drawing is shown at: 1 from kShownPixels up.
+int svgScale(int width, int height);
+
+// drawingPng: the drawing's PNG bytes; width, height: its size in pixels. The SVG's width and
+// height are the picture's size times svgScale (its viewBox in drawing pixels).
 std::string meshSvg(const Multimesh& mesh, int key, const KeyShape& shape, const std::string& drawingPng, int width,
                     int height, const std::vector<InteriorMark>& interior = {});
 
