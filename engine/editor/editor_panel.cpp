@@ -6,6 +6,7 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <cstdio>
 
 namespace ib::editor {
@@ -90,6 +91,7 @@ void EditorView::panel() {
     }
   }
   suggestionsPanel();
+  cutsPanel();
   keysPanel();
   markPanel();
 
@@ -132,6 +134,41 @@ void EditorView::suggestionsPanel() {
     ImGui::SameLine();
     if (ImGui::SmallButton("drop")) {
       suggestions_.erase(suggestions_.begin() + static_cast<std::ptrdiff_t>(i));
+      ImGui::PopID();
+      return;
+    }
+    ImGui::PopID();
+  }
+}
+
+void EditorView::cutsPanel() {
+  // Every cut once (a cut closed in several keys is one), with its kind, a new name and remove.
+  std::vector<std::pair<std::string, std::string>> cuts;  // name, kind
+  for (const KeyMarks& k : session_.marks().keys)
+    for (const CutMark& c : k.cuts)
+      if (std::find_if(cuts.begin(), cuts.end(), [&](const auto& n) { return n.first == c.name; }) == cuts.end())
+        cuts.push_back({c.name, c.kind});
+  if (cuts.empty()) return;
+  ImGui::Separator();
+  ImGui::TextDisabled("Cuts (renaming one renames the features it creates)");
+  cutNames_.resize(cuts.size());
+  for (size_t i = 0; i < cuts.size(); ++i) {
+    ImGui::PushID(static_cast<int>(i));
+    auto& [filledFrom, buffer] = cutNames_[i];
+    if (filledFrom != cuts[i].first) {  // a new list (a cut added, renamed, undone): the field shows the name
+      filledFrom = cuts[i].first;
+      std::snprintf(buffer.data(), buffer.size(), "%s", filledFrom.c_str());
+    }
+    ImGui::SetNextItemWidth(120);
+    ImGui::InputText("##cut", buffer.data(), buffer.size());
+    ImGui::SameLine();
+    ImGui::TextDisabled("%s", cuts[i].second.c_str());
+    ImGui::SameLine(200);
+    if (ImGui::SmallButton("rename") && cuts[i].first != buffer.data()) run(edit::RenameCut{cuts[i].first, buffer.data()});
+    ImGui::SameLine();
+    if (ImGui::SmallButton("remove")) {
+      run(edit::RemoveCut{cuts[i].first, ""});
+      cutNames_.clear();
       ImGui::PopID();
       return;
     }

@@ -115,6 +115,7 @@ class EditorView {
   void keysPanel();
   void markPanel();
   void suggestionsPanel();
+  void cutsPanel();
   void accept(size_t suggestion);
 
   EditorSession& session_;
@@ -141,6 +142,7 @@ class EditorView {
   int selectedMark_ = -1;
   std::vector<FeatureSuggestion> suggestions_;  // proposed by Suggest, until accepted or dropped
   std::array<char, 512> drawingBuffer_{};  // another drawing for the selected key
+  std::vector<std::pair<std::string, std::array<char, 64>>> cutNames_;  // the Cuts list's fields: the name each shows, its text
   int hoverKey_ = -1;
   Eigen::Vector2d hover_ = Eigen::Vector2d::Zero();
   std::array<char, 64> renameBuffer_{};
