@@ -46,6 +46,28 @@ std::string at(editor::EditorView& view, int key, double x, double y, int dx = 0
          std::to_string(static_cast<int>(std::lround(p.y())) + dy);
 }
 
+// Draws a two-point cut in key k with real input: the Cut tool (C), a click at each end, Enter.
+void drawCut(LiveWindow& live, editor::EditorView& view, int key, const Eigen::Vector2d& from, const Eigen::Vector2d& to) {
+  live.send("key c");
+  live.frames(2);
+  live.send(at(view, key, from.x(), from.y()) + " click 1");
+  live.frames(3);
+  live.send(at(view, key, to.x(), to.y()) + " click 1");
+  live.frames(3);
+  live.send("key Return");
+  live.frames(3);
+}
+
+// With the Interior tool: a press at (x, y) in key k, a drag of `radius` drawing px to the right, a release.
+void dragInterior(LiveWindow& live, editor::EditorView& view, int key, double x, double y, double radius) {
+  live.send(at(view, key, x, y) + " mousedown 1");
+  live.frames(3);
+  live.send(at(view, key, x + radius, y));
+  live.frames(3);
+  live.send("mouseup 1");
+  live.frames(3);
+}
+
 // Pixels of window rows [y0, y1) and columns [x0, x1) within 40/255 of an RGB colour.
 int colourCount(const RgbaImage& shot, int x0, int y0, int x1, int y1, int r, int g, int b) {
   int count = 0;
@@ -108,14 +130,7 @@ TEST_CASE("editor window: features clicked onto two keys' outlines, dragged, a c
 
   // A notch cut in the square (C, two clicks, Enter), then its three features
   // where it is open, in the arch, as the editor asks for them.
-  live.send("key c");
-  live.frames(2);
-  live.send(at(view, 0, 64, 100) + " click 1");
-  live.frames(3);
-  live.send(at(view, 0, 64, 64) + " click 1");
-  live.frames(3);
-  live.send("key Return");
-  live.frames(3);
+  drawCut(live, view, 0, {64, 100}, {64, 64});
   std::string messages;
   for (const auto& m : live.session.messages()) messages += m.text + "\n";
   INFO(messages);
@@ -136,15 +151,8 @@ TEST_CASE("editor window: features clicked onto two keys' outlines, dragged, a c
   // An interior feature with a radius dragged out to 6 px, in both keys.
   live.send("key d");
   live.frames(2);
-  for (int k = 0; k < 2; ++k) {
-    const double x = k == 0 ? 48 : 40, y = k == 0 ? 46 : 40;
-    live.send(at(view, k, x, y) + " mousedown 1");
-    live.frames(3);
-    live.send(at(view, k, x + 6, y));
-    live.frames(3);
-    live.send("mouseup 1");
-    live.frames(3);
-  }
+  dragInterior(live, view, 0, 48, 46, 6);
+  dragInterior(live, view, 1, 40, 40, 6);
   REQUIRE(editing.marks().keys[0].interior.count("detail1"));
   REQUIRE(editing.marks().keys[1].interior.count("detail1"));
   CHECK(editing.marks().keys[0].radii.at("detail1") == Approx(6).margin(1.0));
@@ -295,14 +303,7 @@ TEST_CASE("editor window: the README's chomp made from its two drawings with cli
   editing.apply(edit::RenameFeature{"f1", "top"});  // the panel's Rename (typing a name is not a coordinate)
   // The mouth: a notch from the right edge to the centre in the closed key, then its three
   // features in the open key as the editor asks for them: the lower lip, the upper lip, the tip.
-  live.send("key c");
-  live.frames(2);
-  live.send(at(view, 0, 229, 128) + " click 1");
-  live.frames(3);
-  live.send(at(view, 0, 128, 128) + " click 1");
-  live.frames(3);
-  live.send("key Return");
-  live.frames(3);
+  drawCut(live, view, 0, {229, 128}, {128, 128});
   REQUIRE(editing.marks().keys[0].cuts.size() == 1);
   editing.apply(edit::RenameCut{"cut1", "mouth"});
   live.send("key q");
@@ -322,14 +323,7 @@ TEST_CASE("editor window: the README's chomp made from its two drawings with cli
   // The eye: an interior feature with its disc dragged out, in both keys.
   live.send("key d");
   live.frames(2);
-  for (int k = 0; k < 2; ++k) {
-    live.send(at(view, k, 140, 70) + " mousedown 1");
-    live.frames(3);
-    live.send(at(view, k, 149, 70));
-    live.frames(3);
-    live.send("mouseup 1");
-    live.frames(3);
-  }
+  for (int k = 0; k < 2; ++k) dragInterior(live, view, k, 140, 70, 9);
   editing.apply(edit::RenameInteriorFeature{"detail1", "eye"});
   REQUIRE(editing.marks().keys[1].interior.count("eye"));
   live.send("key q mousemove --window 600 650");

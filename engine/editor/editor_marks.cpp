@@ -1,5 +1,6 @@
 #include "editor/editor_marks.h"
 
+#include "pipeline/key_outlines.h"
 #include "scene/scene.h"
 
 #include <nlohmann/json.hpp>
@@ -32,22 +33,6 @@ Polyline readPoints(const json& j) {
 
 CutKind kindOf(const std::string& kind) {
   return kind == "split" ? CutKind::kSplit : kind == "slit" ? CutKind::kSlit : CutKind::kNotch;
-}
-
-// Where p projects onto the loop: segment index plus fraction, and the distance.
-struct OnLoop {
-  double at = 0, distance = INFINITY;
-};
-
-OnLoop project(const Polyline& loop, const Eigen::Vector2d& p) {
-  OnLoop best;
-  for (size_t i = 0; i < loop.size(); ++i) {
-    const Eigen::Vector2d a = loop[i], d = loop[(i + 1) % loop.size()] - a;
-    const double t = d.squaredNorm() > 0 ? std::clamp((p - a).dot(d) / d.squaredNorm(), 0.0, 1.0) : 0.0;
-    const double distance = (a + t * d - p).norm();
-    if (distance < best.distance) best = {static_cast<double>(i) + t, distance};
-  }
-  return best;
 }
 
 Eigen::Vector2d pointAt(const Polyline& loop, double at) {
@@ -164,10 +149,10 @@ std::vector<OutlineArc> outlineArcs(const std::vector<Outline>& outlines, const 
   std::vector<std::vector<std::pair<double, std::string>>> on(loops.size());
   for (const auto& [name, p] : features) {
     int bestLoop = -1;
-    OnLoop best;
+    LoopPoint best;
     for (size_t l = 0; l < loops.size(); ++l) {
       if (loops[l]->size() < 2) continue;
-      const OnLoop o = project(*loops[l], p);
+      const LoopPoint o = nearestOnLoop(*loops[l], p);
       if (o.distance < best.distance) best = o, bestLoop = static_cast<int>(l);
     }
     if (bestLoop >= 0 && best.distance <= onOutline) on[static_cast<size_t>(bestLoop)].push_back({best.at, name});

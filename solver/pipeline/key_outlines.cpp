@@ -1,8 +1,8 @@
 #include "pipeline/key_outlines.h"
 
+#include "core/plane_geometry.h"
 #include "core/png_image.h"
 
-#include <algorithm>
 #include <cmath>
 
 namespace ib {
@@ -33,22 +33,29 @@ const std::vector<Outline>* KeyOutlines::of(const std::string& key) {
   return &it->second;
 }
 
-Eigen::Vector2d nearestOnOutlines(const std::vector<Outline>& outlines, const Eigen::Vector2d& p) {
-  Eigen::Vector2d best = p;
-  double bestDistance = INFINITY;
-  const auto visit = [&](const Polyline& loop) {
-    for (size_t i = 0; i < loop.size(); ++i) {
-      const Eigen::Vector2d a = loop[i], b = loop[(i + 1) % loop.size()], d = b - a;
-      const double t = d.squaredNorm() > 0 ? std::clamp((p - a).dot(d) / d.squaredNorm(), 0.0, 1.0) : 0.0;
-      const Eigen::Vector2d q = a + t * d;
-      if ((q - p).norm() < bestDistance) bestDistance = (q - p).norm(), best = q;
-    }
-  };
-  for (const Outline& o : outlines) {
-    visit(o.outer);
-    for (const Polyline& hole : o.holes) visit(hole);
+LoopPoint nearestOnLoop(const Polyline& loop, const Eigen::Vector2d& p) {
+  LoopPoint best;
+  for (size_t i = 0; i < loop.size(); ++i) {
+    const Eigen::Vector2d a = loop[i], b = loop[(i + 1) % loop.size()];
+    const double t = closestParameter(a, b, p);
+    const Eigen::Vector2d q = a + t * (b - a);
+    if ((q - p).norm() < best.distance) best = {static_cast<double>(i) + t, q, (q - p).norm()};
   }
   return best;
+}
+
+Eigen::Vector2d nearestOnOutlines(const std::vector<Outline>& outlines, const Eigen::Vector2d& p) {
+  LoopPoint best;
+  best.point = p;
+  const auto consider = [&](const Polyline& loop) {
+    const LoopPoint q = nearestOnLoop(loop, p);
+    if (q.distance < best.distance) best = q;
+  };
+  for (const Outline& o : outlines) {
+    consider(o.outer);
+    for (const Polyline& hole : o.holes) consider(hole);
+  }
+  return best.point;
 }
 
 }  // namespace ib
