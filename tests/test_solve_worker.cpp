@@ -264,3 +264,25 @@ TEST_CASE("solve worker: the destructor returns in the middle of a solve that wo
   // return: the test then fails on ctest's timeout for the suite's programs (tests/CMakeLists.txt).
   worker.reset();
 }
+
+TEST_CASE("solve worker: with solving ahead off only the wanted frame is solved; on again, the frames ahead follow") {
+  const auto f = test::strip(400, 2);
+  const auto mesh = shared(f);
+  const Timeline timeline = defaultTimeline({"rest", "bend"});
+  SolveWorker worker(mesh, timeline, {}, {}, mesh->stiffnesses(), {});
+  worker.setSolveAhead(false);
+  worker.showFrame(10);
+  REQUIRE(worker.waitIdle(30));
+  REQUIRE(waitUntil([&] { return !worker.stats().busy; }, 30));
+  // Frame 10 and nothing after it (before solving ahead was turned off the worker may have solved
+  // a few frames from 0), and nothing more comes while it stays off.
+  const int cached = worker.stats().cachedFrames;
+  CHECK(worker.cached(10) != nullptr);
+  CHECK(worker.cached(11) == nullptr);
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  CHECK(worker.stats().cachedFrames == cached);
+  worker.setSolveAhead(true);
+  // Every frame after the wanted one (the timeline does not loop).
+  REQUIRE(waitUntil([&] { return worker.cached(timeline.frameCount() - 1) != nullptr; }, 60));
+  for (int f = 10; f < timeline.frameCount(); ++f) CHECK(worker.cached(f) != nullptr);
+}

@@ -19,6 +19,8 @@
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
+#include <optional>
 
 namespace ib {
 
@@ -29,14 +31,17 @@ constexpr const char* kUsage =
     "\n"
     "Opens the editor's window (`inbetween edit`) on a copy of every scene DIR/NAME/scene.json with its\n"
     "animation playing, and N times moves the reference key's first feature 3 px along its outline (back\n"
-    "and forth), as a drag does. Each edit is timed until the first presented frame solved on the\n"
+    "and forth), as a drag does (without features, its first cut's first point 1 px; a scene with neither\n"
+    "gets a feature at the top of every key first). Each edit is timed until the first presented frame solved on the\n"
     "multimesh it started; then frames are presented until the optimized rebuild that follows is in\n"
-    "(at most 120 s). Needs a display: run under `xvfb-run -a -s \"-screen 0 1920x1080x24\"`.\n"
+    "(at most 120 s), and half a second more. Needs a display: run under\n"
+    "`xvfb-run -a -s \"-screen 0 1920x1080x24\"`.\n"
     "One JSON line per scene: scene, vertices (of the multimesh the edit built), keys, edits,\n"
     "latency_ms (median), latency_max_ms, rebuild_frames (frames presented while a rebuild ran),\n"
     "rebuild_p50_ms, rebuild_p95_ms (their frame times), optimized_s (the optimized rebuild, median),\n"
     "idle_p50_ms, idle_p95_ms (frame times playing without a rebuild, before the edits);\n"
-    "a scene without features reports \"skipped\".\n"
+    "edit (what was timed: a feature moved, or without one a cut's point moved 1 px across it and back);\n"
+    "a scene with cuts but no feature in its reference key reports \"skipped\".\n"
     "\n"
     "  --assets DIR      folder of scenes (default: the bundled scenes)\n"
     "  --scenes LIST     comma-separated scene folder names (default: every one)\n"
@@ -46,6 +51,8 @@ constexpr const char* kUsage =
 
 using Clock = std::chrono::steady_clock;
 
+constexpr double kSettleSeconds = 0.5;  // s of frames presented after an optimized rebuild, before the next edit
+
 double percentile(std::vector<double> values, double p) {
   if (values.empty()) return 0;
   std::sort(values.begin(), values.end());
@@ -53,6 +60,51 @@ double percentile(std::vector<double> values, double p) {
 }
 
 double since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+// The edit timed on a scene: the reference key's first feature moved 3 px along its outline and
+// back, as a drag leaves it; without features, its first cut's first point moved 1 px across the
+// cut and back. A scene with neither gets a feature at the top of every key's outline first (not
+// timed); one with cuts but no features elsewhere is skipped (such a feature would have to fit
+// in with the cuts' own).
+struct TimedEdit {
+  std::string what;                              // e.g. "move feature `f1`"
+  std::function<edit::SceneEdit(int e)> next;    // the e-th edit, from 0
+};
+
+std::optional<TimedEdit> timedEdit(editor::EditorSession& editing, editor::EditorView& view, int reference) {
+  const editor::KeyMarks& key = editing.marks().keys[static_cast<size_t>(reference)];
+  const std::string keyName = key.name;
+  std::string feature = key.features.empty() ? std::string() : key.features.begin()->first;
+  if (feature.empty() && !key.cuts.empty() && key.cuts.front().points.size() >= 2) {
+    const editor::CutMark cut = key.cuts.front();
+    const Eigen::Vector2d p = cut.points[0], along = (cut.points[1] - p).normalized();
+    const Eigen::Vector2d across(-along.y(), along.x());
+    return TimedEdit{"move point 0 of cut `" + cut.name + "`", [keyName, cut, p, across](int e) -> edit::SceneEdit {
+                       return edit::MoveCutPoint{keyName, cut.name, 0, e % 2 == 0 ? Eigen::Vector2d(p + across) : p};
+                     }};
+  }
+  if (feature.empty()) {
+    for (const editor::KeyMarks& k : editing.marks().keys)
+      if (!k.cuts.empty()) return std::nullopt;
+    feature = "bench";
+    for (int k = 0; k < editing.keyCount(); ++k) {
+      const RgbaImage& d = view.drawings()[static_cast<size_t>(k)];
+      const std::optional<Eigen::Vector2d> top =
+          editing.snap(k, Eigen::Vector2d(d.width / 2.0, 0), static_cast<double>(d.width + d.height));
+      if (!top) throw std::runtime_error("bench edit: key " + editing.marks().keys[static_cast<size_t>(k)].name + " has no outline");
+      editing.apply(edit::SetFeature{editing.marks().keys[static_cast<size_t>(k)].name, feature, *top});
+    }
+  }
+  return TimedEdit{"move feature `" + feature + "`", [&editing, reference, keyName, feature](int e) -> edit::SceneEdit {
+                     // The next point 3 px along the outline (alternating directions), as a drag leaves it.
+                     const Eigen::Vector2d at = editing.marks().keys[static_cast<size_t>(reference)].features.at(feature);
+                     const double dx = e % 2 == 0 ? 3 : -3;
+                     std::optional<Eigen::Vector2d> to = editing.snap(reference, at + Eigen::Vector2d(dx, 0), 6);
+                     if (!to || (*to - at).norm() < 0.5) to = editing.snap(reference, at + Eigen::Vector2d(0, dx), 6);
+                     if (!to) throw std::runtime_error("bench edit: no outline point near feature " + feature);
+                     return edit::SetFeature{keyName, feature, *to};
+                   }};
+}
 
 nlohmann::json benchScene(const std::filesystem::path& file, const play::PlayerWindowOptions& base, int edits) {
   const std::string name = file.parent_path().filename().string();
@@ -68,9 +120,8 @@ nlohmann::json benchScene(const std::filesystem::path& file, const play::PlayerW
   play::PlayerWindow window(session, options);
   editor::EditorView& view = *window.editor();
   const int reference = std::max(0, editing.marks().keyIndex(editing.marks().reference));
-  const editor::KeyMarks& key = editing.marks().keys[static_cast<size_t>(reference)];
-  if (key.features.empty()) return {{"scene", name}, {"skipped", "no features"}};
-  const std::string feature = key.features.begin()->first, keyName = key.name;
+  const std::optional<TimedEdit> timed = timedEdit(editing, view, reference);
+  if (!timed) return {{"scene", name}, {"skipped", "no feature to move, and cuts where one could be added"}};
   session.transport().play();
   for (int f = 0; f < 30; ++f) window.frame();
   // Frame times without a rebuild, for comparison, playing.
@@ -84,14 +135,11 @@ nlohmann::json benchScene(const std::filesystem::path& file, const play::PlayerW
 
   std::vector<double> latencies, frameMs, optimized;
   for (int e = 0; e < edits; ++e) {
-    // The next point 3 px along the outline (alternating directions), as a drag leaves it.
-    const Eigen::Vector2d at = editing.marks().keys[static_cast<size_t>(reference)].features.at(feature);
-    const double dx = e % 2 == 0 ? 3 : -3;
-    std::optional<Eigen::Vector2d> to = editing.snap(reference, at + Eigen::Vector2d(dx, 0), 6);
-    if (!to || (*to - at).norm() < 0.5) to = editing.snap(reference, at + Eigen::Vector2d(0, dx), 6);
-    if (!to) throw std::runtime_error("bench edit: " + name + ": no outline point near feature " + feature);
+    const int generation = editing.generation();
     const Clock::time_point start = Clock::now();
-    view.apply(edit::SetFeature{keyName, feature, *to});
+    view.apply(timed->next(e));
+    if (editing.generation() == generation)
+      throw std::runtime_error("bench edit: " + name + ": " + timed->what + " was refused: " + view.status());
     Clock::time_point last = Clock::now();
     bool sent = false;
     for (;;) {
@@ -122,11 +170,15 @@ nlohmann::json benchScene(const std::filesystem::path& file, const play::PlayerW
       if (started && !busy) break;
     }
     if (started) optimized.push_back(since(quiet));
+    // The optimized multimesh swapped in and drawn before the next edit, as after a user's pause.
+    for (const Clock::time_point settle = Clock::now(); since(settle) < kSettleSeconds;) window.frame();
+    last = Clock::now();
   }
   return {{"scene", name},
           {"vertices", session.renderMesh().vertexCount},
           {"keys", editing.keyCount()},
           {"edits", edits},
+          {"edit", timed->what},
           {"latency_ms", percentile(latencies, 0.5)},
           {"latency_max_ms", *std::max_element(latencies.begin(), latencies.end())},
           {"rebuild_frames", frameMs.size()},

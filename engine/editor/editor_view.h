@@ -87,6 +87,7 @@ class EditorView {
   void selectMark(int mark);
   // An edit as the window's tools make it (timed for lastEditLatencyMs); InputError reported, not thrown.
   void apply(const edit::SceneEdit& edit) { run(edit); }
+  const std::string& status() const { return status_; }  // the Edit tab's last message (a refused edit's)
   void moveMark(int mark, double time);
   void moveCut(const std::string& cut, int frame);
   int selectedMark() const { return selectedMark_; }

@@ -84,6 +84,8 @@ RenderMesh renderMeshOf(const Multimesh& mesh, std::vector<RgbaImage> artwork, s
     if (f < 0 || f >= out.vertexCount) throw std::invalid_argument("render: feature vertex " + std::to_string(f) + " is not in the mesh");
   out.features = std::move(features);
   out.inks = cutInksOf(mesh, artwork);
+  // Each key's on its own, in parallel.
+#pragma omp parallel for schedule(dynamic)
   for (int k = 0; k < mesh.keyCount(); ++k)
     artwork[k] = silhouetteArtwork(artwork[k], out.triangles, mesh.boundaryEdges(), mesh.keyPositions(k), silhouette);
   out.artwork = std::move(artwork);

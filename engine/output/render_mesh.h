@@ -7,9 +7,11 @@
 #include "multimesh/multimesh.h"
 #include "output/cut_ink.h"
 #include "output/silhouette_artwork.h"
+#include "output/texture_levels.h"
 
 #include <Eigen/Core>
 #include <array>
+#include <memory>
 #include <vector>
 
 namespace ib::render {
@@ -39,6 +41,9 @@ struct RenderMesh {
   CutSides cutSides;                             // every key's cohesive pairs, for weldCuts
   CutInks inks;                                  // the drawings' outline ink, drawn where cuts open
   std::vector<int> features;                     // vertices marked as features
+  // The artwork as the GPU samples it (textureLevels(artwork)), when made beforehand, e.g. off a
+  // window's thread; null: the renderer makes it from `artwork` when it uploads.
+  std::shared_ptr<const TextureLevels> texture;
 };
 
 // The render mesh of a multimesh whose key positions are in the pixels of `artwork[key]` (the

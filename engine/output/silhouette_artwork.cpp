@@ -17,22 +17,35 @@ struct Grid {
   size_t at(int x, int y) const { return static_cast<size_t>(y) * w + x; }
 };
 
-// Texels whose centre lies in some triangle (either orientation), as 0/1.
+// Texels whose centre lies in some triangle (either orientation), as 0/1. Each triangle's three
+// edge functions are affine in the texel centre: evaluated as a x + b y + c, signed by the
+// triangle's orientation, so a centre on an edge counts.
 std::vector<char> coveredTexels(const Grid& g, const std::vector<Triangle>& triangles, const Eigen::MatrixX2d& x) {
   std::vector<char> inside(static_cast<size_t>(g.w) * g.h, 0);
   for (const Triangle& t : triangles) {
-    const Eigen::Vector2d a = x.row(t[0]).transpose(), b = x.row(t[1]).transpose(), c = x.row(t[2]).transpose();
-    const double area = orient(a, b, c);
+    const Eigen::Vector2d p[3] = {x.row(t[0]).transpose(), x.row(t[1]).transpose(), x.row(t[2]).transpose()};
+    const double area = orient(p[0], p[1], p[2]);
     if (!(std::abs(area) > 0)) continue;
-    const Eigen::Vector2d lo = a.cwiseMin(b).cwiseMin(c), hi = a.cwiseMax(b).cwiseMax(c);
+    const double sign = area > 0 ? 1 : -1;
+    double a[3], b[3], c[3];  // edge e (p[e] to p[e + 1]): orient(p[e], p[e + 1], q) = a q.x + b q.y + c
+    for (int e = 0; e < 3; ++e) {
+      const Eigen::Vector2d& u = p[e];
+      const Eigen::Vector2d& v = p[(e + 1) % 3];
+      a[e] = sign * (u.y() - v.y());
+      b[e] = sign * (v.x() - u.x());
+      c[e] = sign * (u.x() * v.y() - u.y() * v.x());
+    }
+    const Eigen::Vector2d lo = p[0].cwiseMin(p[1]).cwiseMin(p[2]), hi = p[0].cwiseMax(p[1]).cwiseMax(p[2]);
     const int x0 = std::max(0, static_cast<int>(std::floor(lo.x() - 0.5))), x1 = std::min(g.w - 1, static_cast<int>(std::ceil(hi.x() - 0.5)));
     const int y0 = std::max(0, static_cast<int>(std::floor(lo.y() - 0.5))), y1 = std::min(g.h - 1, static_cast<int>(std::ceil(hi.y() - 0.5)));
-    for (int py = y0; py <= y1; ++py)
+    for (int py = y0; py <= y1; ++py) {
+      const double qy = py + 0.5;
       for (int px = x0; px <= x1; ++px) {
-        const Eigen::Vector2d p(px + 0.5, py + 0.5);
-        const double u = orient(a, b, p) * area, v = orient(b, c, p) * area, w = orient(c, a, p) * area;
-        if (u >= 0 && v >= 0 && w >= 0) inside[g.at(px, py)] = 1;
+        const double qx = px + 0.5;
+        if (a[0] * qx + b[0] * qy + c[0] >= 0 && a[1] * qx + b[1] * qy + c[1] >= 0 && a[2] * qx + b[2] * qy + c[2] >= 0)
+          inside[g.at(px, py)] = 1;
       }
+    }
   }
   return inside;
 }
@@ -59,10 +72,20 @@ std::vector<char> bandTexels(const Grid& g, const std::vector<Edge>& boundary, c
 template <class Value, class Merge>
 void spreadIntoBand(const Grid& g, const std::vector<char>& band, std::vector<char>& known, std::vector<Value>& value,
                     int passes, Merge merge) {
+  // The first frontier: the known texels beside a band texel still to reach (the others reach none).
   std::vector<size_t> frontier, next;
+  std::vector<char> seeded(known.size(), 0);
   for (int y = 0; y < g.h; ++y)
-    for (int x = 0; x < g.w; ++x)
-      if (known[g.at(x, y)]) frontier.push_back(g.at(x, y));
+    for (int x = 0; x < g.w; ++x) {
+      if (!band[g.at(x, y)] || known[g.at(x, y)]) continue;
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          const int nx = x + dx, ny = y + dy;
+          if (nx < 0 || ny < 0 || nx >= g.w || ny >= g.h) continue;
+          const size_t j = g.at(nx, ny);
+          if (known[j] && !seeded[j]) seeded[j] = 1, frontier.push_back(j);
+        }
+    }
   for (int pass = 0; pass < passes && !frontier.empty(); ++pass) {
     next.clear();
     for (size_t i : frontier) {

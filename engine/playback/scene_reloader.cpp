@@ -6,6 +6,7 @@
 #include "core/error.h"
 #include "multimesh/multimesh.h"
 #include "multimesh/multimesh_io.h"
+#include "meshing/previous_map.h"
 #include "meshing/trace_cache.h"
 #include "pipeline/key_drawings.h"
 #include "scene/parameters.h"
@@ -31,8 +32,10 @@ LoadedScene built(Scene scene, const SceneMultimeshOptions& options, const Pipel
   SceneMultimesh mesh = sceneMultimesh(scene, options, progress);
   out.mesh = mesh.multimesh;
   out.initial = mesh.initial ? mesh.initial : initialBeside(scene);
-  out.drawings = readKeyDrawings(scene);
+  out.drawings = readKeyDrawings(scene, options.traceCache);
   out.features = featureVertices(scene, *out.mesh);
+  if (progress) progress("preparing the artwork", 1);
+  out.render = playerRenderMesh(scene, *out.mesh, out.drawings, out.features);
   out.scene = std::move(scene);
   return out;
 }
@@ -64,6 +67,23 @@ struct BuildCancelled {};
 // its own).
 bool urgent(const Job& job) { return job.text && !job.comesh; }
 
+// The last build's map as the start of the next's, matching keys by name and drawing; none when
+// the reference key is another.
+PreviousMap previousMap(const Scene& lastScene, const std::shared_ptr<const Multimesh>& lastMesh, const Scene& scene) {
+  PreviousMap out;
+  if (!lastMesh || lastScene.keys.size() != static_cast<size_t>(lastMesh->keyCount())) return out;
+  if (lastScene.keys[static_cast<size_t>(lastScene.reference)].name != scene.keys[static_cast<size_t>(scene.reference)].name) return out;
+  out.mesh = lastMesh;
+  out.reference = lastScene.reference;
+  for (const KeySpec& key : scene.keys) {
+    int found = -1;
+    for (size_t k = 0; k < lastScene.keys.size(); ++k)
+      if (lastScene.keys[k].name == key.name && lastScene.keys[k].drawing == key.drawing) found = static_cast<int>(k);
+    out.keyOf.push_back(found);
+  }
+  return out;
+}
+
 // Loads the job's scene, keeping `last`'s multimesh, drawings and features when only fields that
 // do not shape the mesh changed and its drawings and stiffness image did not (null `last`: none).
 Loaded load(const Job& job, const Loaded* last, TraceCache* traces, const PipelineProgress& progress) {
@@ -77,6 +97,7 @@ Loaded load(const Job& job, const Loaded* last, TraceCache* traces, const Pipeli
   if (last && last->scene && last->meshFields == out.meshFields && last->meshStamps == out.meshStamps &&
       (last->optimized || !job.comesh)) {
     LoadedScene kept = *last->scene;
+    if (kept.scene.cutInk != scene.cutInk) kept.render = playerRenderMesh(scene, *kept.mesh, kept.drawings, kept.features);
     kept.scene = std::move(scene);
     kept.build = job.id;
     out.scene = std::make_shared<const LoadedScene>(std::move(kept));
@@ -87,6 +108,10 @@ Loaded load(const Job& job, const Loaded* last, TraceCache* traces, const Pipeli
     options.comesh = job.comesh;
     options.threads = job.threads;
     options.traceCache = traces;
+    // An edit's quick build, a preview: each key's map starts from the last one's.
+    PreviousMap previous;
+    if (urgent(job) && last && last->scene) previous = previousMap(last->scene->scene, last->scene->mesh, scene);
+    if (previous.mesh) options.previous = &previous;
     LoadedScene fresh = built(std::move(scene), options, progress);
     fresh.build = job.id;
     out.scene = std::make_shared<const LoadedScene>(std::move(fresh));
@@ -96,6 +121,14 @@ Loaded load(const Job& job, const Loaded* last, TraceCache* traces, const Pipeli
 }
 
 }  // namespace
+
+std::shared_ptr<const render::RenderMesh> playerRenderMesh(const Scene& scene, const Multimesh& mesh,
+                                                           const std::vector<RgbaImage>& drawings, std::vector<int> features) {
+  render::RenderMesh out = render::renderMeshOf(mesh, drawings, std::move(features));
+  if (!scene.cutInk) out.inks = {};
+  out.texture = std::make_shared<const render::TextureLevels>(render::textureLevels(out.artwork));
+  return std::make_shared<const render::RenderMesh>(std::move(out));
+}
 
 LoadedScene loadPlayerScene(const std::string& scenePath, const PipelineProgress& progress) {
   return built(loadScene(scenePath), SceneMultimeshOptions{}, progress);

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "core/png_image.h"
+#include "output/render_mesh.h"
 #include "pipeline/scene_multimesh.h"
 #include "scene/scene.h"
 
@@ -20,11 +21,18 @@ struct LoadedScene {
                                              // beside the scene), else null
   std::vector<RgbaImage> drawings;           // [key]
   std::vector<int> features;                 // featureVertices(scene, *mesh)
+  std::shared_ptr<const render::RenderMesh> render;  // playerRenderMesh of mesh, made with it (off the
+                                                     // window's thread for a rebuild); never null
   int build = 0;                             // which request loaded it (SceneReloader::rebuildFromText); 0: the first
 };
 
-// Loads a scene: loadScene, sceneMultimesh (the cache when current), the drawings and the
-// features. Throws InputError for a bad scene.
+// What the player draws of `mesh` (the scene's multimesh or its initial map): renderMeshOf with
+// `features`, without the cuts' outline ink when the scene turns it off, its texture levels made.
+std::shared_ptr<const render::RenderMesh> playerRenderMesh(const Scene& scene, const Multimesh& mesh,
+                                                           const std::vector<RgbaImage>& drawings, std::vector<int> features);
+
+// Loads a scene: loadScene, sceneMultimesh (the cache when current), the drawings, the features
+// and the render mesh. Throws InputError for a bad scene.
 LoadedScene loadPlayerScene(const std::string& scenePath, const PipelineProgress& progress = nullptr);
 
 class SceneReloader {

@@ -208,6 +208,17 @@ void SolveWorker::Impl::showWeights(const Eigen::VectorXd& w) {
   done_.notify_all();
 }
 
+void SolveWorker::Impl::setSolveAhead(bool on) {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (ahead_ == on) return;
+    ahead_ = on;
+    if (!on && running_.kind == Job::Kind::kFrame) cancelUnless(running_.wanted);
+  }
+  wake_.notify_all();
+  done_.notify_all();
+}
+
 std::shared_ptr<const AnimationFrame> SolveWorker::Impl::latest() const {
   std::lock_guard<std::mutex> lock(mutex_);
   if (!weightsMode_)
@@ -259,6 +270,7 @@ void SolveWorker::setParameters(const InterpolationParams& interpolation, const 
 }
 void SolveWorker::showFrame(int index) { impl_->showFrame(index); }
 void SolveWorker::showWeights(const Eigen::VectorXd& w) { impl_->showWeights(w); }
+void SolveWorker::setSolveAhead(bool on) { impl_->setSolveAhead(on); }
 std::shared_ptr<const AnimationFrame> SolveWorker::latest() const { return impl_->latest(); }
 std::shared_ptr<const AnimationFrame> SolveWorker::cached(int index) const { return impl_->cached(index); }
 SolveWorker::Stats SolveWorker::stats() const { return impl_->stats(); }

@@ -78,6 +78,10 @@ class SolveWorker {
   void showFrame(int index);
   // Weights mode: a still at weights w (convex, m x 1; std::invalid_argument otherwise).
   void showWeights(const Eigen::VectorXd& w);
+  // Timeline mode solves ahead of the wanted frame while idle (on: the default). Off while other
+  // work needs the cores more (the editor's rebuild after an edit): only wanted frames are solved,
+  // and a solve ahead under way is cancelled. Cheap when it does not change.
+  void setSolveAhead(bool on);
 
   // Non-blocking, never null once anything is solved: the wanted frame if solved, else the most
   // recently solved frame (or still) that was wanted when its solve began (else the most recently

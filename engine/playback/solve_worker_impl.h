@@ -49,6 +49,7 @@ class SolveWorker::Impl {
   void setParameters(Parameters parameters);
   void showFrame(int index);
   void showWeights(const Eigen::VectorXd& w);
+  void setSolveAhead(bool on);
   std::shared_ptr<const AnimationFrame> latest() const;
   std::shared_ptr<const AnimationFrame> cached(int index) const;
   Stats stats() const;
@@ -96,6 +97,7 @@ class SolveWorker::Impl {
   bool dynamics_ = false;              // the applied parameters have dynamics
   int streamNext_ = 0;                 // stream_->nextFrame()
   bool weightsMode_ = false;
+  bool ahead_ = true;                  // setSolveAhead
   int wanted_ = 0;
   Eigen::VectorXd weights_;            // showWeights
   long request_ = 0, stillDone_ = -1;  // showWeights calls; the one last solved or failed

@@ -83,6 +83,7 @@ SolveWorker::Impl::Job SolveWorker::Impl::plan() const {
     return job;
   }
   if (!cache_.count(wanted_)) return reachable(wanted_) ? towards(wanted_, true) : job;
+  if (!ahead_) return job;
   // Ahead of the wanted frame while the cache has room, or the frame is nearer than its farthest.
   int farthest = 0;
   for (const auto& entry : cache_) farthest = std::max(farthest, distance(entry.first));

@@ -42,9 +42,10 @@ void PlayerSession::rebuild(bool keepParameters) {
   if (!hasInitialMap()) initialMap_ = false;
   const std::shared_ptr<const Multimesh> played = initialMap_ ? loaded.initial : loaded.mesh;
   previousMesh_ = std::move(renderMesh_);
-  renderMesh_ = std::make_unique<render::RenderMesh>(
-      render::renderMeshOf(*played, loaded.drawings, initialMap_ ? featureVertices(loaded.scene, *played) : loaded.features));
-  if (!loaded.scene.cutInk) renderMesh_->inks = {};
+  // The scene's multimesh comes with its render mesh, made off this thread; the initial map's is
+  // made here (the user switched to it).
+  renderMesh_ = initialMap_ ? playerRenderMesh(loaded.scene, *played, loaded.drawings, featureVertices(loaded.scene, *played))
+                            : loaded.render;
   parameters_ = std::make_unique<LiveParameters>(loaded.scene);
   for (const auto& [name, value] : tuned) {
     try {
@@ -110,6 +111,8 @@ bool PlayerSession::update(double seconds) {
     meshChanged = true;
   }
   if (parameters_->generation() != sentGeneration_) sendParameters();
+  // A rebuild (an edit's) gets the cores the worker would spend on frames nobody asked for yet.
+  worker_->setSolveAhead(!reloader_->busy());
   if (!weightsMode_) {
     const int frame = transport_->advance(seconds);
     if (frame != requestedFrame_) {

@@ -73,7 +73,7 @@ class PlayerSession {
 
   std::unique_ptr<SceneReloader> reloader_;
   SolveWorker::Options options_;
-  std::unique_ptr<render::RenderMesh> renderMesh_, previousMesh_;  // the previous one lives a frame longer
+  std::shared_ptr<const render::RenderMesh> renderMesh_, previousMesh_;  // the previous one lives a frame longer
   std::unique_ptr<LiveParameters> parameters_;
   std::unique_ptr<Transport> transport_;
   std::unique_ptr<SolveWorker> worker_;

@@ -1,13 +1,15 @@
 // Every key's drawing in one 2D-array texture, one layer per key, premultiplied alpha, RGBA8
 // UNORM (blending happens in the drawings' own colour values, as in 2D paint programs). Layers
 // share the largest drawing's size; a smaller drawing sits in its layer's top-left corner with
-// transparent padding, so its UVs scale by drawing size / layer size. A full mip chain (linear
-// blits of the premultiplied texels) and trilinear filtering keep line art smooth when drawn smaller;
-// a second, nearest-neighbour sampler keeps magnified pixel art crisp (render::Sampling).
+// transparent padding, so its UVs scale by drawing size / layer size. A full mip chain (made on the
+// CPU as linear blits would make it: output/texture_levels.h) and trilinear filtering keep line art
+// smooth when drawn smaller; a second, nearest-neighbour sampler keeps magnified pixel art crisp
+// (render::Sampling).
 #pragma once
 
 #include "core/png_image.h"
 #include "gpu/gpu_resources.h"
+#include "output/texture_levels.h"
 
 #include <vector>
 
@@ -21,9 +23,8 @@ struct ArtworkTexture {
 };
 
 // Throws VulkanError when the device cannot hold it (e.g. a layer above maxImageDimension2D).
+ArtworkTexture uploadArtwork(const VulkanContext& context, VkCommandPool pool, const render::TextureLevels& levels);
+// The same from the drawings (straight alpha): render::textureLevels of them, then uploaded.
 ArtworkTexture uploadArtwork(const VulkanContext& context, VkCommandPool pool, const std::vector<RgbaImage>& drawings);
-
-// Straight to premultiplied alpha, rounding: c * a / 255.
-RgbaImage premultiplied(const RgbaImage& image);
 
 }  // namespace ib::vk

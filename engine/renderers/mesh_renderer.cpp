@@ -16,7 +16,6 @@ namespace {
 constexpr float kWireframe[4] = {0.25f, 0.4f, 0.6f, 0.7f};    // premultiplied: steel blue, 70% opaque
 constexpr float kCohesive[4] = {0.9f, 0.1f, 0.1f, 1.0f};       // red
 constexpr float kFeature[4] = {0.1f, 0.3f, 0.95f, 1.0f};       // blue
-constexpr int kArtworkFloats = sizeof(vk::ArtworkVertex) / sizeof(float);
 constexpr int kSquareCorners[6][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, -1}, {1, 1}, {-1, 1}};  // two triangles
 
 // clip = p * view.xy + view.zw maps the view box onto [-1, 1]^2 (Vulkan's y points down, like drawings').
@@ -48,21 +47,21 @@ void pushVertex(vk::OverlayVertex*& out, double x, double y, const float colour[
 
 }  // namespace
 
-MeshRenderer::MeshRenderer(const vk::VulkanContext& context, VkCommandPool pool, const RenderMesh& mesh, VkRenderPass pass,
-                           VkSampleCountFlagBits samples, int slots)
-    : context_(&context),
-      vertexCount_(mesh.vertexCount),
+MeshRenderer::MeshRenderer(const vk::VulkanContext& context, VkCommandPool pool, const RenderMesh& mesh,
+                           std::shared_ptr<const vk::RendererPipelines> pipelines, int slots)
+    : vertexCount_(mesh.vertexCount),
       keyCount_(static_cast<int>(mesh.keyUV.size())),
       indexCount_(static_cast<uint32_t>(3 * mesh.triangles.size())),
       edges_(mesh.edges),
       cohesiveEdges_(mesh.cohesiveEdges),
       cutSides_(mesh.cutSides),
       inks_(mesh.inks),
-      features_(mesh.features) {
+      features_(mesh.features),
+      pipelines_(std::move(pipelines)) {
+  if (!pipelines_) throw std::invalid_argument("render: no pipelines");
   if (keyCount_ == 0 || vertexCount_ == 0 || mesh.triangles.empty()) throw std::invalid_argument("render: the mesh is empty");
   VkDevice device = context.device();
-  pipelines_ = vk::createRendererPipelines(device, pass, samples);
-  artwork_ = vk::uploadArtwork(context, pool, mesh.artwork);
+  artwork_ = mesh.texture ? vk::uploadArtwork(context, pool, *mesh.texture) : vk::uploadArtwork(context, pool, mesh.artwork);
   // UVs vertex-major (n x m vec2), scaled from each drawing's size to the shared layer size.
   std::vector<float> uv(2 * static_cast<size_t>(vertexCount_) * keyCount_);
   for (int k = 0; k < keyCount_; ++k) {
@@ -81,7 +80,7 @@ MeshRenderer::MeshRenderer(const vk::VulkanContext& context, VkCommandPool pool,
                               "the index buffer");
   // One set per sampler (Sampling), each with the artwork and the UVs.
   descriptorPool_ = createDescriptorPool(device, kSamplings);
-  const VkDescriptorSetLayout layouts[kSamplings] = {pipelines_.setLayout.get(), pipelines_.setLayout.get()};
+  const VkDescriptorSetLayout layouts[kSamplings] = {pipelines_->setLayout.get(), pipelines_->setLayout.get()};
   VkDescriptorSetAllocateInfo allocate{};
   allocate.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO;
   allocate.descriptorPool = descriptorPool_.get();
@@ -167,8 +166,8 @@ void MeshRenderer::drawArtwork(VkCommandBuffer cmd, const float view[4], double 
   std::copy(active.layers, active.layers + kMaxActiveKeys, push.layers);
   push.activeCount = active.count;
   push.keyCount = keyCount_;
-  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.artwork[vk::artworkVariant(active.count)].get());
-  vkCmdPushConstants(cmd, pipelines_.artworkLayout.get(), VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_->artwork[vk::artworkVariant(active.count)].get());
+  vkCmdPushConstants(cmd, pipelines_->artworkLayout.get(), VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
                      sizeof push, &push);
   const VkBuffer buffer = streams_[slot].buffer.get();
   vkCmdBindVertexBuffers(cmd, 0, 1, &buffer, &offset);
@@ -206,14 +205,14 @@ void MeshRenderer::drawOverlays(VkCommandBuffer cmd, const float view[4], VkExte
   const uint32_t triangleVertices = static_cast<uint32_t>(out - first) - lineVertices;
   if (lineVertices + triangleVertices == 0) return;
   const VkBuffer buffer = streams_[slot].buffer.get();
-  vkCmdPushConstants(cmd, pipelines_.overlayLayout.get(), VK_SHADER_STAGE_VERTEX_BIT, 0, 4 * sizeof(float), view);
+  vkCmdPushConstants(cmd, pipelines_->overlayLayout.get(), VK_SHADER_STAGE_VERTEX_BIT, 0, 4 * sizeof(float), view);
   vkCmdBindVertexBuffers(cmd, 0, 1, &buffer, &offset);
   if (lineVertices) {
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.overlayLines.get());
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_->overlayLines.get());
     vkCmdDraw(cmd, lineVertices, 1, 0, 0);
   }
   if (triangleVertices) {
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.overlayTriangles.get());
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_->overlayTriangles.get());
     vkCmdDraw(cmd, triangleVertices, 1, lineVertices, 0);
   }
 }
@@ -231,7 +230,7 @@ void MeshRenderer::record(VkCommandBuffer cmd, int slot, VkExtent2D extent, cons
                                         extent.height / (frame.view.y1 - frame.view.y0));
   // The frame's sampler, for its onion skins and itself (the overlay pipelines use no sets).
   const VkDescriptorSet set = descriptorSets_[frame.sampling == Sampling::kNearest ? 1 : 0];
-  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.artworkLayout.get(), 0, 1, &set, 0, nullptr);
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_->artworkLayout.get(), 0, 1, &set, 0, nullptr);
   VkDeviceSize offset = 0;
   for (const OnionSkin& skin : frame.onion) {
     if (!skin.positions) throw std::invalid_argument("render: an onion skin has no positions");

@@ -13,16 +13,19 @@
 #include "renderers/renderer_pipelines.h"
 
 #include <array>
+#include <memory>
 #include <vector>
 
 namespace ib::render {
 
 class MeshRenderer {
  public:
-  // `pass` and `samples` are the target's; `slots` is how many frames may be in flight. Uploads the
-  // artwork (one array layer per key, premultiplied) through `pool`. Throws VulkanError.
-  MeshRenderer(const vk::VulkanContext& context, VkCommandPool pool, const RenderMesh& mesh, VkRenderPass pass,
-               VkSampleCountFlagBits samples, int slots);
+  // `pipelines` are the target's (its render pass and sample count: createRendererPipelines), shared
+  // with the renderers of the meshes it draws before and after this one; `slots` is how many
+  // frames may be in flight. Uploads the artwork (one array layer per key, premultiplied: the
+  // mesh's texture when it has one) through `pool`. Throws VulkanError.
+  MeshRenderer(const vk::VulkanContext& context, VkCommandPool pool, const RenderMesh& mesh,
+               std::shared_ptr<const vk::RendererPipelines> pipelines, int slots);
 
   // Records `frame` into `cmd`, inside a begun render pass of `extent` pixels. Writes slot `slot`'s
   // stream buffer: the caller must know that slot's previous frame has finished. Throws
@@ -46,7 +49,6 @@ class MeshRenderer {
   void drawOverlays(VkCommandBuffer cmd, const float view[4], VkExtent2D extent, const FrameDraw& frame, int slot,
                     VkDeviceSize offset);
 
-  const vk::VulkanContext* context_;
   int vertexCount_ = 0;
   int keyCount_ = 0;
   uint32_t indexCount_ = 0;
@@ -56,7 +58,7 @@ class MeshRenderer {
   CutInks inks_;                                       // the outline ink drawn where cuts open (inkFrame)
   std::vector<int> features_;
   VkDeviceSize overlayCapacity_ = 0;             // overlay vertices a stream buffer holds
-  vk::RendererPipelines pipelines_;
+  std::shared_ptr<const vk::RendererPipelines> pipelines_;  // never null
   vk::ArtworkTexture artwork_;
   vk::GpuBuffer uvs_;
   vk::GpuBuffer indices_;

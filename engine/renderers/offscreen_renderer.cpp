@@ -53,7 +53,9 @@ OffscreenRenderer::OffscreenRenderer(const vk::VulkanContext& context, const Ren
   VkDevice device = context.device();
   pool_ = vk::createCommandPool(context);
   pass_ = vk::createColorRenderPass(device, kFormat, samples_, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
-  renderer_ = std::make_unique<MeshRenderer>(context, pool_.get(), mesh, pass_.get(), samples_, options.framesInFlight);
+  renderer_ = std::make_unique<MeshRenderer>(
+      context, pool_.get(), mesh, std::make_shared<const vk::RendererPipelines>(vk::createRendererPipelines(device, pass_.get(), samples_)),
+      options.framesInFlight);
   for (int s = 0; s < options.framesInFlight; ++s) {
     auto slot = std::make_unique<Slot>();
     vk::ImageSpec spec;

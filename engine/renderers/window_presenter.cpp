@@ -43,7 +43,8 @@ WindowPresenter::WindowPresenter(const RenderMesh& mesh, const WindowOptions& op
   swapchain_ = std::make_unique<vk::Swapchain>(*context_, options.vsync);
   pass_ = vk::createColorRenderPass(context_->device(), swapchain_->format(), samples_, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR);
   overlayPool_ = createOverlayPool(context_->device());
-  renderer_ = std::make_unique<MeshRenderer>(*context_, pool_.get(), mesh, pass_.get(), samples_, options.framesInFlight);
+  pipelines_ = std::make_shared<const vk::RendererPipelines>(vk::createRendererPipelines(context_->device(), pass_.get(), samples_));
+  renderer_ = std::make_unique<MeshRenderer>(*context_, pool_.get(), mesh, pipelines_, options.framesInFlight);
   for (int f = 0; f < options.framesInFlight; ++f) {
     Frame frame;
     VkCommandBufferAllocateInfo allocate{};
@@ -64,9 +65,9 @@ WindowPresenter::~WindowPresenter() {
 }
 
 void WindowPresenter::setMesh(const RenderMesh& mesh) {
-  vk::check(vkDeviceWaitIdle(context_->device()), "waiting for the frames in flight before changing the mesh");
-  renderer_.reset();
-  renderer_ = std::make_unique<MeshRenderer>(*context_, pool_.get(), mesh, pass_.get(), samples_, framesInFlight_);
+  auto next = std::make_unique<MeshRenderer>(*context_, pool_.get(), mesh, pipelines_, framesInFlight_);
+  retired_.emplace_back(std::move(renderer_), submitted_);
+  renderer_ = std::move(next);
 }
 
 void WindowPresenter::setBackdrop(const Backdrop& backdrop) {
@@ -156,6 +157,10 @@ bool WindowPresenter::present(const FrameDraw& frame, const Overlay& overlay, Rg
   Frame& f = frames_[current_];
   VkFence fence = f.fence.get();
   vk::check(vkWaitForFences(device, 1, &fence, VK_TRUE, UINT64_MAX), "waiting for a frame in flight");
+  // A fence of a queue submission signals after every earlier submission to the queue too.
+  completed_ = std::max(completed_, f.submission);
+  retired_.erase(std::remove_if(retired_.begin(), retired_.end(), [&](const auto& r) { return r.second <= completed_; }),
+                 retired_.end());
   uint32_t index = 0;
   const VkResult acquired =
       vkAcquireNextImageKHR(device, swapchain_->get(), UINT64_MAX, f.imageAvailable.get(), VK_NULL_HANDLE, &index);
@@ -205,6 +210,7 @@ bool WindowPresenter::present(const FrameDraw& frame, const Overlay& overlay, Rg
   submit.signalSemaphoreCount = 1;
   submit.pSignalSemaphores = &finished;
   vk::check(vkQueueSubmit(context_->queue(), 1, &submit, fence), "submitting a frame (vkQueueSubmit)");
+  f.submission = ++submitted_;
 
   const VkSwapchainKHR swapchain = swapchain_->get();
   VkPresentInfoKHR present{};

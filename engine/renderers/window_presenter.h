@@ -69,8 +69,9 @@ class WindowPresenter {
   // swapchain was out of date and rebuilt (then `capture` is untouched).
   bool present(const FrameDraw& frame, const Overlay& overlay = {}, RgbaImage* capture = nullptr);
 
-  // Draws `mesh` from the next frame on (a scene reloaded with another topology); waits for the
-  // frames in flight first. `mesh` must outlive the presenter or the next setMesh.
+  // Draws `mesh` from the next frame on (a scene reloaded with another topology). The frames in
+  // flight finish with the old one, which is released once they have (no wait here). `mesh` must
+  // outlive the presenter or the next setMesh.
   void setMesh(const RenderMesh& mesh);
   void setBackdrop(const Backdrop& backdrop);
   const Backdrop& backdrop() const { return backdrop_; }
@@ -92,6 +93,7 @@ class WindowPresenter {
     VkCommandBuffer cmd = VK_NULL_HANDLE;  // freed with the pool
     vk::SemaphoreObject imageAvailable;
     vk::FenceObject fence;
+    uint64_t submission = 0;  // the number of its last submission (submitted_ then)
   };
   void rebuild();
   void recordBackdrop(VkCommandBuffer cmd) const;
@@ -108,7 +110,12 @@ class WindowPresenter {
   std::unique_ptr<vk::Swapchain> swapchain_;
   vk::RenderPassObject pass_;
   vk::DescriptorPoolObject overlayPool_;
+  std::shared_ptr<const vk::RendererPipelines> pipelines_;  // for pass_ and samples_, every mesh's
   std::unique_ptr<MeshRenderer> renderer_;
+  // Renderers replaced by setMesh, with submitted_ then: released once that submission is done.
+  std::vector<std::pair<std::unique_ptr<MeshRenderer>, uint64_t>> retired_;
+  uint64_t submitted_ = 0;  // frames submitted so far
+  uint64_t completed_ = 0;  // every submission up to this one has finished (a frame's fence waited)
   std::vector<Frame> frames_;
   int current_ = 0;
   int rebuilds_ = 0;

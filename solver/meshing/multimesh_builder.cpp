@@ -9,11 +9,17 @@
 #include "meshing/shared_boundary.h"
 #include "meshing/stiffness_paint.h"
 
+#include "core/thread_block.h"
+
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <exception>
 #include <filesystem>
 #include <memory>
+#include <mutex>
 #include <sstream>
+#include <tuple>
 
 namespace ib {
 
@@ -159,6 +165,9 @@ ComeshBoundary comeshBoundary(const SharedBoundary& boundary, const ReferenceMes
   return out;
 }
 
+// Thrown through a key's mapping when another key's progress report failed: that key stops.
+struct StopMapping {};
+
 struct Attempt {
   std::optional<Multimesh> multimesh;
   std::vector<KeyReport> report;
@@ -166,8 +175,51 @@ struct Attempt {
   Eigen::Vector2d failedAt = Eigen::Vector2d::Zero();
 };
 
+// Maps the reference mesh onto key k (x: n x 2, px; starts as the rest positions): its boundary
+// placed, inside from the previous map (`start`, may be null) or a Tutte fill for the other keys,
+// untangled. Returns the untangling's result, or an injective one when nothing needed untangling.
+UntangleResult mapKey(const Scene& scene, const SharedBoundary& boundary, const ReferenceMesh& mesh, const InteriorPins& pins,
+                      const std::vector<char>& onBoundary, const std::vector<char>& locked, const Eigen::MatrixX2d& rest,
+                      const PreviousMapStart* start, int k, Eigen::MatrixX2d& x, UntangleOptions untangleOptions) {
+  placeBoundary(boundary, mesh, k, x);
+  // Interior features: the reference key has them in place; every other key is mapped with them
+  // free first, then they are moved to the key's placements (untangleToPins).
+  const bool pinsMove = k != scene.reference && !pins.vertices.empty();
+  if (k != scene.reference && start && start->covers(k)) {
+    // From the previous map, with the interior features where this key places them: as it is
+    // when that folds nothing, else untangled from there; a fold that stays is mapped afresh.
+    Eigen::MatrixX2d y = x;
+    const Eigen::MatrixX2d from = start->positions(k);
+    for (Eigen::Index v = 0; v < y.rows(); ++v)
+      if (!onBoundary[static_cast<size_t>(v)]) y.row(v) = from.row(v);
+    for (size_t p = 0; pinsMove && p < pins.vertices.size(); ++p) y.row(pins.vertices[p]) = pins.targets[k][p].transpose();
+    UntangleResult r;
+    std::tie(r.minArea, r.worstTriangle) = smallestTriangleArea(mesh.triangles, y);
+    r.injective = r.minArea > 0;
+    if (!r.injective) r = untangle(mesh.triangles, rest, y, locked, untangleOptions);
+    if (r.injective) {
+      x = y;
+      return r;
+    }
+  }
+  if (k != scene.reference && !harmonicFill(mesh.triangles, onBoundary, x))
+    throw std::runtime_error("Tutte embedding: factorization failed");
+  UntangleResult r;
+  std::tie(r.minArea, r.worstTriangle) = smallestTriangleArea(mesh.triangles, x);
+  r.injective = r.minArea > 0;
+  if (k == scene.reference && r.injective) return r;
+  r = untangle(mesh.triangles, rest, x, pinsMove ? onBoundary : locked, untangleOptions);
+  if (r.injective && pinsMove)
+    r = untangleToPins(mesh.triangles, rest, x, onBoundary, pins.vertices, pins.targets[k], untangleOptions);
+  return r;
+}
+
+// Every key mapped, in parallel over the keys (each on its own: the result does not depend on the
+// threads). A key that folds fails the attempt: the first such key in key order is reported.
+// Progress reports come one at a time; an exception from one (a cancelled build) stops the keys
+// not started and is rethrown once the running ones end.
 Attempt mapKeys(const Scene& scene, const SharedBoundary& boundary, const ReferenceMesh& mesh, const InteriorPins& pins,
-                const MultimeshBuildOptions& options) {
+                double edgeLength, const MultimeshBuildOptions& options) {
   const int n = static_cast<int>(mesh.points.size()), m = static_cast<int>(scene.keys.size());
   Eigen::MatrixX2d rest(n, 2);
   for (int v = 0; v < n; ++v) rest.row(v) = mesh.points[v].transpose();
@@ -175,35 +227,68 @@ Attempt mapKeys(const Scene& scene, const SharedBoundary& boundary, const Refere
   for (int v = 0; v < n; ++v) locked[v] = mesh.tags[v].arc >= 0;
   const std::vector<char> onBoundary = locked;
   for (int v : pins.vertices) locked[v] = 1;  // pinned where each key places its interior feature
+  std::optional<PreviousMapStart> start;
+  if (options.previous) start.emplace(*options.previous, rest, 2 * edgeLength);
   Attempt out;
-  std::vector<Eigen::MatrixX2d> positions(m);
-  for (int k = 0; k < m; ++k) {
-    if (options.progress) options.progress("mapping key " + scene.keys[k].name, static_cast<double>(k) / m);
-    Eigen::MatrixX2d& x = positions[k];
-    x = rest;
-    placeBoundary(boundary, mesh, k, x);
-    // Interior features: the reference key has them in place; every other key is mapped with them
-    // free first, then they are moved to the key's placements (untangleToPins).
-    const bool pinsMove = k != scene.reference && !pins.vertices.empty();
-    if (k != scene.reference && !harmonicFill(mesh.triangles, onBoundary, x))
-      throw std::runtime_error("Tutte embedding: factorization failed");
-    if (k != scene.reference || smallestTriangleArea(mesh.triangles, x).first <= 0) {
-      UntangleOptions untangleOptions = options.untangle;  // progress within the key: minutes at 100k vertices
-      if (options.progress)
-        untangleOptions.progress = [&](int done, int most) {
-          options.progress("mapping key " + scene.keys[k].name + " (untangling, step " + std::to_string(done) + ")",
-                           (k + static_cast<double>(done) / most) / m);
-        };
-      UntangleResult r = untangle(mesh.triangles, rest, x, pinsMove ? onBoundary : locked, untangleOptions);
-      if (r.injective && pinsMove)
-        r = untangleToPins(mesh.triangles, rest, x, onBoundary, pins.vertices, pins.targets[k], untangleOptions);
-      if (!r.injective) {
-        const Triangle& t = mesh.triangles[r.worstTriangle];
-        out.failedKey = k;
-        out.failedAt = (x.row(t[0]) + x.row(t[1]) + x.row(t[2])).transpose() / 3;
-        return out;
-      }
+  std::vector<Eigen::MatrixX2d> positions(m, rest);
+  std::vector<UntangleResult> results(m);
+  std::mutex reporting;
+  std::exception_ptr error;
+  std::atomic<bool> stop{false};
+  int started = 0;  // keys begun (under `reporting`): the progress fraction
+  auto report = [&](const std::string& what, double fraction) {
+    std::lock_guard<std::mutex> lock(reporting);
+    if (error) throw StopMapping{};
+    if (!options.progress) return;
+    try {
+      options.progress(what, fraction);
+    } catch (...) {
+      error = std::current_exception();
+      stop = true;
+      throw StopMapping{};
     }
+  };
+  auto map = [&](int k) {
+    if (stop) return;
+    try {
+      double begun = 0;
+      {
+        std::lock_guard<std::mutex> lock(reporting);
+        begun = static_cast<double>(started++) / m;
+      }
+      report("mapping key " + scene.keys[k].name, begun);
+      UntangleOptions untangleOptions = options.untangle;  // progress within the key: minutes at 100k vertices
+      untangleOptions.progress = [&, k, begun](int done, int most) {
+        report("mapping key " + scene.keys[k].name + " (untangling, step " + std::to_string(done) + ")",
+               begun + static_cast<double>(done) / most / m);
+      };
+      results[k] = mapKey(scene, boundary, mesh, pins, onBoundary, locked, rest, start ? &*start : nullptr, k, positions[k],
+                          untangleOptions);
+    } catch (const StopMapping&) {
+      stop = true;
+    } catch (...) {
+      std::lock_guard<std::mutex> lock(reporting);
+      if (!error) error = std::current_exception();
+      stop = true;
+    }
+  };
+  // The reference key first (its own positions: rarely any untangling), then the others side by
+  // side. With one other key, it alone gets the team (the untangler's triangle loop is parallel).
+  map(scene.reference);
+  std::vector<int> others;
+  for (int k = 0; k < m; ++k)
+    if (k != scene.reference) others.push_back(k);
+  const int count = static_cast<int>(others.size());
+#pragma omp parallel for schedule(dynamic) num_threads(teamFor(count))
+  for (int i = 0; i < count; ++i) map(others[i]);
+  if (error) std::rethrow_exception(error);
+  for (int k = 0; k < m; ++k) {
+    if (results[k].injective) continue;
+    const Triangle& t = mesh.triangles[results[k].worstTriangle];
+    const Eigen::MatrixX2d& x = positions[k];
+    out.failedKey = k;
+    out.failedAt = (x.row(t[0]) + x.row(t[1]) + x.row(t[2])).transpose() / 3;
+    return out;
   }
   out.multimesh.emplace(n, mesh.triangles);
   for (int k = 0; k < m; ++k) {
@@ -262,7 +347,7 @@ BuiltScene buildMultimesh(const Scene& scene, const MultimeshBuildOptions& optio
       throw InputError(file + ": key " + inQuotes(scene.keys[scene.reference].name) + ": cannot mesh: " + e.what());
     }
     const InteriorPins pins = interiorPins(scene, mesh, edgeLength);
-    Attempt result = mapKeys(scene, boundary, mesh, pins, options);
+    Attempt result = mapKeys(scene, boundary, mesh, pins, edgeLength, options);
     if (result.multimesh) {
       built.multimesh = std::move(result.multimesh);
       built.boundary = comeshBoundary(boundary, mesh, pins, m);

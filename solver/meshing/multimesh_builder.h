@@ -5,6 +5,7 @@
 
 #include "comesh/comesh_mesh.h"
 #include "meshing/key_shape.h"
+#include "meshing/previous_map.h"
 #include "meshing/reference_mesh.h"
 #include "meshing/untangle.h"
 #include "multimesh/multimesh.h"
@@ -30,6 +31,13 @@ struct MultimeshBuildOptions {
   std::function<void(const std::string& stage, double fraction)> progress;
   // Traced drawings kept from earlier builds (meshing/trace_cache.h); null: every drawing is traced.
   TraceCache* traceCache = nullptr;
+  // A map built before for these keys (meshing/previous_map.h): each key's map is where it puts
+  // the new mesh's points (interior features where the key places them), untangled from there only
+  // when that folds a triangle, instead of a Tutte embedding untangled; a key it does not cover, or
+  // whose start does not untangle, is mapped as without it. Much faster after a small edit, but the map
+  // then depends on the one before: for previews (the editor's quick rebuild), not for files.
+  // Null: none (the default).
+  const PreviousMap* previous = nullptr;
 };
 
 // What a built scene is made of, for pictures and checks.

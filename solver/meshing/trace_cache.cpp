@@ -1,7 +1,5 @@
 #include "meshing/trace_cache.h"
 
-#include "core/png_image.h"
-
 #include <filesystem>
 #include <sstream>
 
@@ -26,11 +24,11 @@ const TraceCache::Traced& TraceCache::traced(const std::string& path, const Trac
     ++hits_;
     return found->second;
   }
-  const RgbaImage image = readPng(path);
   Traced t;
-  t.size = {image.width, image.height};
-  t.outlines = traceOutlines(shapeMask(image, options, holes, path), options, path);
-  if (entries_.size() > 256) entries_.clear();  // drawings swapped many times: start again
+  t.drawing = readPng(path);
+  t.size = {t.drawing.width, t.drawing.height};
+  t.outlines = traceOutlines(shapeMask(t.drawing, options, holes, path), options, path);
+  if (entries_.size() >= kMostEntries) entries_.clear();  // drawings swapped many times: start again
   return entries_.emplace(key.str(), std::move(t)).first->second;
 }
 

@@ -2,17 +2,18 @@
 
 #include "core/error.h"
 #include "meshing/paper.h"
+#include "meshing/trace_cache.h"
 #include "scene/scene.h"
 
 #include <filesystem>
 
 namespace ib {
 
-std::vector<RgbaImage> readKeyDrawings(const Scene& scene) {
+std::vector<RgbaImage> readKeyDrawings(const Scene& scene, TraceCache* traces) {
   std::vector<RgbaImage> out;
   for (const KeySpec& key : scene.keys) {
     try {
-      RgbaImage image = readPng(key.drawing);
+      RgbaImage image = traces ? traces->traced(key.drawing, scene.tracing, key.holes).drawing : readPng(key.drawing);
       // On paper: the paper transparent and its antialiased edge un-blended, as traced.
       if (tracedByColour(image, scene.tracing))
         image = paperToAlpha(image, findPaper(image, scene.tracing, key.holes, key.drawing));

@@ -8,14 +8,15 @@
 
 namespace ib {
 
-struct Scene;  // scene/scene.h
+struct Scene;       // scene/scene.h
+class TraceCache;   // meshing/trace_cache.h
 
 // [key]: the drawing as 8-bit RGBA, the artwork every front end draws. A drawing traced by colour
 // (no alpha, or tracing.background set) comes with its paper made transparent and its outline's
 // antialiasing un-blended from the paper (meshing/paper.h: paperToAlpha), enclosed paper kept
 // opaque unless marked as a hole, so the artwork has the traced shape's holes. Throws
 // InputError naming the scene file, the key and the drawing when one cannot be read or a hole
-// point is misplaced.
-std::vector<RgbaImage> readKeyDrawings(const Scene& scene);
+// point is misplaced. With `traces`, a drawing it holds (the build before traced it) is not read again.
+std::vector<RgbaImage> readKeyDrawings(const Scene& scene, TraceCache* traces = nullptr);
 
 }  // namespace ib

@@ -137,6 +137,7 @@ SceneMultimesh build(const Scene& scene, const SceneMultimeshOptions& options, M
   const double buildShare = options.comesh ? 0.3 : 1.0;  // of the whole call; Comesh takes the rest
   MultimeshBuildOptions buildOptions;
   buildOptions.traceCache = options.traceCache;
+  buildOptions.previous = options.previous;
   buildOptions.progress = [&](const std::string& stage, double fraction) {
     progress(stage, buildShare * buildFraction(stage, fraction));
   };

@@ -18,6 +18,7 @@ struct KeyShape;      // meshing/key_shape.h
 struct ComeshOptions; // comesh/comesh.h
 struct ComeshReport;  // comesh/comesh.h
 class TraceCache;     // meshing/trace_cache.h
+struct PreviousMap;   // meshing/previous_map.h
 
 struct SceneMultimeshOptions {
   // A .ibmesh file to use instead of the cache or a build; its key count must be the scene's.
@@ -38,6 +39,9 @@ struct SceneMultimeshOptions {
   // When building: drawings traced by earlier builds, reused while unchanged (an editor's
   // rebuilds); used by one build at a time. Default null: every drawing is traced.
   TraceCache* traceCache = nullptr;
+  // When building: the map of an earlier build to start each key's mapping from
+  // (MultimeshBuildOptions::previous: for previews only). Default null.
+  const PreviousMap* previous = nullptr;
 };
 
 // Where the multimesh came from.
