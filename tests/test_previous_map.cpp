@@ -7,6 +7,7 @@
 #include "meshing/previous_map.h"
 #include "scene/scene.h"
 #include "testkit/example_scenes.h"
+#include "testkit/fixtures.h"
 
 #include <catch2/catch.hpp>
 
@@ -47,7 +48,7 @@ double smallestArea(const Multimesh& mesh, int key) {
 }  // namespace
 
 TEST_CASE("multimesh builder: keys mapped side by side on two threads equal the map of one thread, bit for bit") {
-  for (const std::string& file : test::bundledSceneFiles(INBETWEEN_ASSETS)) {
+  for (const std::string& file : ::test::bundledSceneFiles(INBETWEEN_ASSETS)) {
     const Scene scene = loadScene(file);
     if (scene.keys.size() < 3) continue;  // with one key to untangle, the keys are not split
     INFO("asset " << file);
@@ -66,7 +67,7 @@ TEST_CASE("multimesh builder: keys mapped side by side on two threads equal the 
 }
 
 TEST_CASE("previous map: a build from the previous build's map of the same scene reproduces it within 1e-9 px") {
-  for (const std::string& file : test::bundledSceneFiles(INBETWEEN_ASSETS)) {
+  for (const std::string& file : ::test::bundledSceneFiles(INBETWEEN_ASSETS)) {
     INFO("asset " << file);
     const Scene scene = loadScene(file);
     const std::shared_ptr<const Multimesh> cold = build(scene);
@@ -79,7 +80,7 @@ TEST_CASE("previous map: a build from the previous build's map of the same scene
 
 TEST_CASE("previous map: after a feature moves 3 px, the build from the previous map folds nothing and places the boundary as a fresh build") {
   int moved = 0;
-  for (const std::string& file : test::bundledSceneFiles(INBETWEEN_ASSETS)) {
+  for (const std::string& file : ::test::bundledSceneFiles(INBETWEEN_ASSETS)) {
     const Scene before = loadScene(file);
     if (before.keys[static_cast<size_t>(before.reference)].features.empty()) continue;
     INFO("asset " << file);
@@ -105,7 +106,7 @@ TEST_CASE("previous map: after a feature moves 3 px, the build from the previous
 }
 
 TEST_CASE("previous map: a map that does not cover the new shape is not used; the build is a fresh one") {
-  const std::vector<std::string> files = test::bundledSceneFiles(INBETWEEN_ASSETS);
+  const std::vector<std::string> files = ::test::bundledSceneFiles(INBETWEEN_ASSETS);
   const Scene scene = loadScene(files.front());
   // The previous map moved 1000 px away: no point of the new mesh is within reach of it.
   Multimesh shifted = *build(scene);
@@ -122,4 +123,46 @@ TEST_CASE("previous map: a map that does not cover the new shape is not used; th
   CHECK_FALSE(away.covers(other));
   const std::shared_ptr<const Multimesh> fresh = build(scene), warm = build(scene, &previous);
   for (int k = 0; k < fresh->keyCount(); ++k) CHECK(largestDifference(*warm, *fresh, k) == 0);
+}
+
+TEST_CASE("previous map: a carried map's fold is untangled where it is; vertices more than kFoldRings rings away stay put") {
+  const ib::test::Fixture f = ib::test::strip(600, 2);
+  const Multimesh& mesh = f.mesh;
+  const Eigen::MatrixX2d rest = mesh.keyPositions(0);
+  Eigen::MatrixX2d carried = mesh.keyPositions(1);
+  std::vector<char> locked = mesh.onBoundary();
+  // Fold one interior vertex over a neighbour: push it across its ring.
+  int moved = -1;
+  for (int v = mesh.vertexCount() / 2; v < mesh.vertexCount(); ++v)
+    if (!locked[static_cast<size_t>(v)]) {
+      moved = v;
+      break;
+    }
+  int neighbour = -1;
+  for (const Edge& e : mesh.edges())
+    if (e[0] == moved || e[1] == moved) neighbour = e[0] == moved ? e[1] : e[0];
+  carried.row(moved) += 2.5 * (carried.row(neighbour) - carried.row(moved));
+  REQUIRE(smallestTriangleArea(mesh.triangles(), carried).first <= 0);
+  // Vertices within kFoldRings rings of the folded triangles, as untangleCarried counts them.
+  std::vector<char> near(static_cast<size_t>(mesh.vertexCount()), 0);
+  for (const Triangle& t : mesh.triangles())
+    if (signedArea(carried.row(t[0]), carried.row(t[1]), carried.row(t[2])) <= 0)
+      for (int c : t) near[static_cast<size_t>(c)] = 1;
+  for (int ring = 0; ring < kFoldRings; ++ring) {
+    std::vector<char> grown = near;
+    for (const Triangle& t : mesh.triangles())
+      if (near[static_cast<size_t>(t[0])] || near[static_cast<size_t>(t[1])] || near[static_cast<size_t>(t[2])])
+        for (int c : t) grown[static_cast<size_t>(c)] = 1;
+    near.swap(grown);
+  }
+  Eigen::MatrixX2d x = carried;
+  const UntangleResult r = untangleCarried(mesh.triangles(), rest, x, locked, UntangleOptions{});
+  CHECK(r.injective);
+  CHECK(smallestTriangleArea(mesh.triangles(), x).first > 0);
+  double farthest = 0;
+  int far = 0;
+  for (int v = 0; v < mesh.vertexCount(); ++v)
+    if (!near[static_cast<size_t>(v)]) farthest = std::max(farthest, (x.row(v) - carried.row(v)).norm()), ++far;
+  CHECK(far > mesh.vertexCount() / 2);
+  CHECK(farthest == 0);
 }

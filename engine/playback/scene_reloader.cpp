@@ -108,9 +108,11 @@ Loaded load(const Job& job, const Loaded* last, TraceCache* traces, const Pipeli
     options.comesh = job.comesh;
     options.threads = job.threads;
     options.traceCache = traces;
-    // An edit's quick build, a preview: each key's map starts from the last one's.
+    // An edit's quick build, a preview: each key's map starts from the last one's initial map
+    // (its triangles are much like the new mesh's; Comesh's are not, and carry folds over).
     PreviousMap previous;
-    if (urgent(job) && last && last->scene) previous = previousMap(last->scene->scene, last->scene->mesh, scene);
+    if (urgent(job) && last && last->scene)
+      previous = previousMap(last->scene->scene, last->scene->initial ? last->scene->initial : last->scene->mesh, scene);
     if (previous.mesh) options.previous = &previous;
     LoadedScene fresh = built(std::move(scene), options, progress);
     fresh.build = job.id;

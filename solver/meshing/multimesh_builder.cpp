@@ -187,7 +187,8 @@ UntangleResult mapKey(const Scene& scene, const SharedBoundary& boundary, const 
   const bool pinsMove = k != scene.reference && !pins.vertices.empty();
   if (k != scene.reference && start && start->covers(k)) {
     // From the previous map, with the interior features where this key places them: as it is
-    // when that folds nothing, else untangled from there; a fold that stays is mapped afresh.
+    // when that folds nothing, else untangled from there (the folds' neighbourhood first, then
+    // the whole inside); a fold that stays is mapped afresh.
     Eigen::MatrixX2d y = x;
     const Eigen::MatrixX2d from = start->positions(k);
     for (Eigen::Index v = 0; v < y.rows(); ++v)
@@ -196,7 +197,7 @@ UntangleResult mapKey(const Scene& scene, const SharedBoundary& boundary, const 
     UntangleResult r;
     std::tie(r.minArea, r.worstTriangle) = smallestTriangleArea(mesh.triangles, y);
     r.injective = r.minArea > 0;
-    if (!r.injective) r = untangle(mesh.triangles, rest, y, locked, untangleOptions);
+    if (!r.injective) r = untangleCarried(mesh.triangles, rest, y, locked, untangleOptions);
     if (r.injective) {
       x = y;
       return r;

@@ -5,6 +5,7 @@
 // map's other keys; after a small edit that start is nearly untangled already.
 #pragma once
 
+#include "meshing/untangle.h"
 #include "multimesh/multimesh.h"
 
 #include <Eigen/Core>
@@ -38,5 +39,13 @@ class PreviousMapStart {
   std::vector<int> triangle_;                 // [point]: the previous triangle it is in (or nearest)
   std::vector<Eigen::Vector3d> barycentric_;  // [point]: its weights there (clamped: non-negative, sum 1)
 };
+
+// Untangles a map carried from the previous one (positions, n x 2, updated in place; `locked` as
+// untangle() takes it): the vertices within kFoldRings rings of triangles of a folded triangle
+// first, the rest held (the carried map is good there, and a few free vertices converge in a few
+// iterations); when that leaves a fold, every vertex not locked.
+UntangleResult untangleCarried(const std::vector<Triangle>& triangles, const Eigen::MatrixX2d& rest,
+                               Eigen::MatrixX2d& positions, const std::vector<char>& locked, const UntangleOptions& options);
+constexpr int kFoldRings = 4;
 
 }  // namespace ib
