@@ -3,6 +3,7 @@
 #include "gpu/vulkan_check.h"
 
 #include <cstring>
+#include <utility>
 #include <string>
 
 namespace ib::vk {
@@ -105,6 +106,47 @@ GpuImage createImage(const VulkanContext& context, const ImageSpec& spec, const 
 }
 
 void submitAndWait(const VulkanContext& context, VkCommandPool pool, const std::function<void(VkCommandBuffer)>& record) {
+  submit(context, pool, record).wait();
+}
+
+Submission::Submission(VkDevice device, VkCommandPool pool, VkCommandBuffer cmd, FenceObject fence, GpuBuffer kept)
+    : device_(device), pool_(pool), cmd_(cmd), fence_(std::move(fence)), kept_(std::move(kept)) {}
+
+Submission::Submission(Submission&& other) noexcept { *this = std::move(other); }
+
+Submission& Submission::operator=(Submission&& other) noexcept {
+  if (this != &other) {
+    release();
+    device_ = other.device_;
+    pool_ = other.pool_;
+    cmd_ = std::exchange(other.cmd_, VK_NULL_HANDLE);
+    fence_ = std::move(other.fence_);
+    kept_ = std::move(other.kept_);
+  }
+  return *this;
+}
+
+Submission::~Submission() { release(); }
+
+void Submission::wait() {
+  if (cmd_ == VK_NULL_HANDLE) return;
+  const VkFence fence = fence_.get();
+  check(vkWaitForFences(device_, 1, &fence, VK_TRUE, UINT64_MAX), "waiting for commands to finish");
+  release();
+}
+
+void Submission::release() {
+  if (cmd_ == VK_NULL_HANDLE) return;
+  const VkFence fence = fence_.get();
+  vkWaitForFences(device_, 1, &fence, VK_TRUE, UINT64_MAX);  // a destructor: a lost device is not reported here
+  vkFreeCommandBuffers(device_, pool_, 1, &cmd_);
+  cmd_ = VK_NULL_HANDLE;
+  fence_ = FenceObject();
+  kept_ = GpuBuffer();
+}
+
+Submission submit(const VulkanContext& context, VkCommandPool pool, const std::function<void(VkCommandBuffer)>& record,
+                  GpuBuffer kept) {
   VkCommandBufferAllocateInfo allocate{};
   allocate.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO;
   allocate.commandPool = pool;
@@ -112,11 +154,13 @@ void submitAndWait(const VulkanContext& context, VkCommandPool pool, const std::
   allocate.commandBufferCount = 1;
   VkCommandBuffer cmd = VK_NULL_HANDLE;
   check(vkAllocateCommandBuffers(context.device(), &allocate, &cmd), "allocating a command buffer");
-  struct Free {  // the command buffer goes back to the pool however this ends
+  struct Free {  // until submitted, the command buffer goes back to the pool however this ends
     VkDevice device;
     VkCommandPool pool;
     VkCommandBuffer cmd;
-    ~Free() { vkFreeCommandBuffers(device, pool, 1, &cmd); }
+    ~Free() {
+      if (cmd != VK_NULL_HANDLE) vkFreeCommandBuffers(device, pool, 1, &cmd);
+    }
   } free{context.device(), pool, cmd};
   VkCommandBufferBeginInfo begin{};
   begin.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO;
@@ -125,13 +169,13 @@ void submitAndWait(const VulkanContext& context, VkCommandPool pool, const std::
   record(cmd);
   check(vkEndCommandBuffer(cmd), "recording a command buffer");
   FenceObject fence = createFence(context.device(), false);
-  VkSubmitInfo submit{};
-  submit.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO;
-  submit.commandBufferCount = 1;
-  submit.pCommandBuffers = &cmd;
-  VkFence fenceHandle = fence.get();
-  check(vkQueueSubmit(context.queue(), 1, &submit, fenceHandle), "submitting commands (vkQueueSubmit)");
-  check(vkWaitForFences(context.device(), 1, &fenceHandle, VK_TRUE, UINT64_MAX), "waiting for commands to finish");
+  VkSubmitInfo info{};
+  info.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO;
+  info.commandBufferCount = 1;
+  info.pCommandBuffers = &cmd;
+  check(vkQueueSubmit(context.queue(), 1, &info, fence.get()), "submitting commands (vkQueueSubmit)");
+  free.cmd = VK_NULL_HANDLE;  // the Submission frees it once the commands are done
+  return Submission(context.device(), pool, cmd, std::move(fence), std::move(kept));
 }
 
 void transitionImage(VkCommandBuffer cmd, VkImage image, uint32_t layers, VkImageLayout from, VkImageLayout to,

@@ -54,6 +54,33 @@ GpuImage createImage(const VulkanContext& context, const ImageSpec& spec, const 
 // Records commands with `record`, submits them to the context's queue and waits for them to finish.
 void submitAndWait(const VulkanContext& context, VkCommandPool pool, const std::function<void(VkCommandBuffer)>& record);
 
+// Commands submitted without waiting for them: they run on the queue while the caller goes on, and
+// later submissions to the queue see their results through the barriers they record. Keeps the
+// buffer they read (e.g. a staging buffer) until they are done; destroying it waits for them and
+// frees the command buffer (on the thread that owns `pool`). Move-only.
+class Submission {
+ public:
+  Submission() = default;
+  Submission(VkDevice device, VkCommandPool pool, VkCommandBuffer cmd, FenceObject fence, GpuBuffer kept);
+  Submission(Submission&& other) noexcept;
+  Submission& operator=(Submission&& other) noexcept;
+  Submission(const Submission&) = delete;
+  Submission& operator=(const Submission&) = delete;
+  ~Submission();
+  void wait();        // until they have (VulkanError for a lost device), then frees what it holds
+
+ private:
+  void release();  // waits, then frees the command buffer and what it keeps
+  VkDevice device_ = VK_NULL_HANDLE;
+  VkCommandPool pool_ = VK_NULL_HANDLE;
+  VkCommandBuffer cmd_ = VK_NULL_HANDLE;
+  FenceObject fence_;
+  GpuBuffer kept_;
+};
+// Records commands with `record` and submits them to the context's queue; `kept` lives until they finish.
+Submission submit(const VulkanContext& context, VkCommandPool pool, const std::function<void(VkCommandBuffer)>& record,
+                  GpuBuffer kept = {});
+
 // A layout transition of every layer's colour aspect in mip levels [baseMip, baseMip + mipCount),
 // with the given stages and accesses.
 void transitionImage(VkCommandBuffer cmd, VkImage image, uint32_t layers, VkImageLayout from, VkImageLayout to,

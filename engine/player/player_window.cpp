@@ -191,7 +191,8 @@ bool PlayerWindow::frame(RgbaImage* capture) {
     ui_.timelineEditing.selectedMark = editor_->selectedMark();
   }
   if (session_.update(seconds)) {
-    presenter_->setMesh(session_.renderMesh());
+    presenter_->prepareMesh(session_.renderMesh());  // drawn from the new multimesh's first solved frame on
+    meshPending_ = true;
     applySceneSampling(false);
     if (!editor_) presenter_->window().setTitle("inbetween play - " + session_.scenePath());
   }
@@ -224,12 +225,24 @@ bool PlayerWindow::frame(RgbaImage* capture) {
   const std::shared_ptr<const AnimationFrame> shown = session_.shown();
   const render::ViewBox view =
       ui_.navigation.windowView(content, ui_.canvas, ui_.width, ui_.height);
+  // A reloaded multimesh is drawn once its worker has solved a frame; until then the last frame
+  // of the one before stays on screen (without onion skins), not an empty canvas.
+  if (meshPending_ && shown && shown->x.rows() == session_.renderMesh().vertexCount) {
+    presenter_->usePreparedMesh();
+    meshPending_ = false;
+  }
   std::deque<AnimationFrame> window;
   size_t at = 0;
   render::FrameDraw draw;
   draw.view = view;
   draw.overlays = ui_.view.overlays;
-  if (shown && shown->x.rows() == session_.renderMesh().vertexCount) {
+  if (meshPending_ && lastDrawn_) {
+    window.push_back(*lastDrawn_);
+    render::OnionStyle style = ui_.view.onion;
+    style.neighbours = 0;
+    draw = render::frameWithOnionSkins(window, 0, style, view, ui_.view.overlays);
+  } else if (!meshPending_ && shown && shown->x.rows() == session_.renderMesh().vertexCount) {
+    lastDrawn_ = shown;
     const int n = session_.weightsMode() ? 0 : ui_.view.onion.neighbours;
     for (int d = n; d >= 1; --d)
       if (auto f = session_.cachedFrame(shown->index - d)) window.push_back(*f);
@@ -258,7 +271,8 @@ bool PlayerWindow::frame(RgbaImage* capture) {
   RgbaImage shot;
   const bool wantShot = ui_.screenshotRequested && presenter_->canCapture();
   const bool presented = presenter_->present(draw, overlay, capture ? capture : wantShot ? &shot : nullptr);
-  if (presented && editor_ && editor_->awaitingFrame() && shown && shown->x.rows() == session_.renderMesh().vertexCount)
+  if (presented && editor_ && editor_->awaitingFrame() && !meshPending_ && shown &&
+      shown->x.rows() == session_.renderMesh().vertexCount)
     editor_->newMeshPresented();
   if (presented && wantShot) {
     ui_.screenshotRequested = false;

@@ -90,6 +90,8 @@ class PlayerWindow {
   KeyQueue keys_;  // presses since the last frame, for the shortcuts; releases held back for ImGui
   void (*previousKey_)(GLFWwindow*, int, int, int, int) = nullptr;  // GLFW's key callback before ours
   bool laidOut_ = false;  // the first frame's layout passes are done
+  bool meshPending_ = false;  // the session reloaded its multimesh; the presenter draws the old one
+  std::shared_ptr<const AnimationFrame> lastDrawn_;  // the frame drawn last, of the presenter's mesh
   int laidOutFrames_ = 0;  // frames presented or skipped so far
   std::optional<render::Sampling> samplingOverride_;  // PlayerWindowOptions::sampling
   bool sceneNearest_ = false;                        // the scene's sampling last applied: nearest

@@ -57,16 +57,17 @@ ArtworkTexture uploadArtwork(const VulkanContext& context, VkCommandPool pool, c
     region.imageExtent = {static_cast<uint32_t>(levels.levels[l].width), static_cast<uint32_t>(levels.levels[l].height), 1};
     regions.push_back(region);
   }
-  submitAndWait(context, pool, [&](VkCommandBuffer cmd) {
+  const VkBuffer source = staging.buffer.get();  // `staging` itself goes into the Submission
+  out.upload = submit(context, pool, [&](VkCommandBuffer cmd) {
     transitionImage(cmd, out.image.image.get(), spec.layers, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                     VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT, 0,
                     spec.mipLevels);
-    vkCmdCopyBufferToImage(cmd, staging.buffer.get(), out.image.image.get(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+    vkCmdCopyBufferToImage(cmd, source, out.image.image.get(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                            static_cast<uint32_t>(regions.size()), regions.data());
     transitionImage(cmd, out.image.image.get(), spec.layers, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
                     VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT, 0, spec.mipLevels);
-  });
+  }, std::move(staging));
   out.linear = createSampler(context.device(), false);
   out.nearest = createSampler(context.device(), true);
   return out;

@@ -20,9 +20,12 @@ struct ArtworkTexture {
   SamplerObject linear;     // trilinear, clamped to the edge
   SamplerObject nearest;    // nearest texel of the nearest mip level, clamped to the edge
   VkExtent2D layerSize{};   // pixels
+  Submission upload;        // the copy into `image`, on the queue (keeps its staging buffer until done)
 };
 
-// Throws VulkanError when the device cannot hold it (e.g. a layer above maxImageDimension2D).
+// The copy is submitted, not waited for: draws submitted after it to the same queue sample the
+// finished texture. Throws VulkanError when the device cannot hold it (e.g. a layer above
+// maxImageDimension2D).
 ArtworkTexture uploadArtwork(const VulkanContext& context, VkCommandPool pool, const render::TextureLevels& levels);
 // The same from the drawings (straight alpha): render::textureLevels of them, then uploaded.
 ArtworkTexture uploadArtwork(const VulkanContext& context, VkCommandPool pool, const std::vector<RgbaImage>& drawings);

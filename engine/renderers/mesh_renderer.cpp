@@ -72,12 +72,15 @@ MeshRenderer::MeshRenderer(const vk::VulkanContext& context, VkCommandPool pool,
       uv[2 * (static_cast<size_t>(v) * keyCount_ + k) + 1] = mesh.keyUV[k](v, 1) * sv;
     }
   }
-  uvs_ = vk::uploadBuffer(context, pool, uv.data(), uv.size() * sizeof(float), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "the UV buffer");
+  // Host-visible, written in place: no copy on the queue for the window to wait on after a reload.
+  uvs_ = vk::createBuffer(context, uv.size() * sizeof(float), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true, "the UV buffer");
+  std::memcpy(uvs_.mapped, uv.data(), uv.size() * sizeof(float));
   std::vector<uint32_t> index;
   for (const Triangle& t : mesh.triangles)
     for (int c : t) index.push_back(static_cast<uint32_t>(c));
-  indices_ = vk::uploadBuffer(context, pool, index.data(), index.size() * sizeof(uint32_t), VK_BUFFER_USAGE_INDEX_BUFFER_BIT,
+  indices_ = vk::createBuffer(context, index.size() * sizeof(uint32_t), VK_BUFFER_USAGE_INDEX_BUFFER_BIT, true,
                               "the index buffer");
+  std::memcpy(indices_.mapped, index.data(), index.size() * sizeof(uint32_t));
   // One set per sampler (Sampling), each with the artwork and the UVs.
   descriptorPool_ = createDescriptorPool(device, kSamplings);
   const VkDescriptorSetLayout layouts[kSamplings] = {pipelines_->setLayout.get(), pipelines_->setLayout.get()};

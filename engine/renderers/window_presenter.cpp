@@ -64,10 +64,15 @@ WindowPresenter::~WindowPresenter() {
   if (context_) vkDeviceWaitIdle(context_->device());
 }
 
-void WindowPresenter::setMesh(const RenderMesh& mesh) {
-  auto next = std::make_unique<MeshRenderer>(*context_, pool_.get(), mesh, pipelines_, framesInFlight_);
+void WindowPresenter::prepareMesh(const RenderMesh& mesh) {
+  prepared_ = std::make_unique<MeshRenderer>(*context_, pool_.get(), mesh, pipelines_, framesInFlight_);
+}
+
+bool WindowPresenter::usePreparedMesh() {
+  if (!prepared_) return false;
   retired_.emplace_back(std::move(renderer_), submitted_);
-  renderer_ = std::move(next);
+  renderer_ = std::move(prepared_);
+  return true;
 }
 
 void WindowPresenter::setBackdrop(const Backdrop& backdrop) {

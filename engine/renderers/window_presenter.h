@@ -69,10 +69,17 @@ class WindowPresenter {
   // swapchain was out of date and rebuilt (then `capture` is untouched).
   bool present(const FrameDraw& frame, const Overlay& overlay = {}, RgbaImage* capture = nullptr);
 
-  // Draws `mesh` from the next frame on (a scene reloaded with another topology). The frames in
-  // flight finish with the old one, which is released once they have (no wait here). `mesh` must
-  // outlive the presenter or the next setMesh.
-  void setMesh(const RenderMesh& mesh);
+  // Uploads `mesh` (a scene reloaded with another topology) for usePreparedMesh, while the current
+  // one is still drawn: its artwork's copy runs on the queue meanwhile. Replaces a mesh prepared
+  // earlier and not used.
+  void prepareMesh(const RenderMesh& mesh);
+  // Draws the prepared mesh from the next frame on; false (nothing changes) when none is prepared.
+  // The frames in flight finish with the old one, which is released once they have (no wait here).
+  bool usePreparedMesh();
+  void setMesh(const RenderMesh& mesh) {  // both at once
+    prepareMesh(mesh);
+    usePreparedMesh();
+  }
   void setBackdrop(const Backdrop& backdrop);
   const Backdrop& backdrop() const { return backdrop_; }
 
@@ -112,6 +119,7 @@ class WindowPresenter {
   vk::DescriptorPoolObject overlayPool_;
   std::shared_ptr<const vk::RendererPipelines> pipelines_;  // for pass_ and samples_, every mesh's
   std::unique_ptr<MeshRenderer> renderer_;
+  std::unique_ptr<MeshRenderer> prepared_;  // prepareMesh's, until usePreparedMesh
   // Renderers replaced by setMesh, with submitted_ then: released once that submission is done.
   std::vector<std::pair<std::unique_ptr<MeshRenderer>, uint64_t>> retired_;
   uint64_t submitted_ = 0;  // frames submitted so far
