@@ -21,7 +21,18 @@ constexpr double kIdleBeforeOptimizing = 1.5;  // s without an edit before the C
 EditorView::EditorView(EditorSession& session, play::PlayerSession& player) : session_(session), player_(player) {
   loadDrawings();
   sentGeneration_ = session_.generation();  // the player built the scene as opened
+  // The live parameters go into the document (undoable, like any edit), and the document into the
+  // file: the file never gets ahead of the document, which a later save would write back.
+  player_.setParameterSaver([this](play::LiveParameters& parameters, double fps) {
+    std::vector<edit::SceneEdit> edits = parameters.saveEdits(session_.document());
+    if (session_.document().parameter("fps") != fps) edits.push_back(edit::SetParameter{"fps", fps});
+    for (const edit::SceneEdit& e : edits) session_.apply(e);
+    parameters.markSaved();
+    session_.save();
+  });
 }
+
+EditorView::~EditorView() { player_.setParameterSaver(nullptr); }
 
 void EditorView::loadDrawings() {
   std::vector<std::string> files;

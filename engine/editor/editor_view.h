@@ -35,7 +35,11 @@ struct ToolSettings {
 
 class EditorView {
  public:
+  // Saves the player's parameters (its Save parameters button) into the document, then the file.
   EditorView(EditorSession& session, play::PlayerSession& player);
+  ~EditorView();
+  EditorView(const EditorView&) = delete;
+  EditorView& operator=(const EditorView&) = delete;
 
   // Splits the canvas into the key views (top) and the animation's preview (below).
   void layout(const play::PixelRect& canvas, int width, int height);

@@ -136,16 +136,24 @@ FrameOptions LiveParameters::frameOptions() const {
   return options;
 }
 
-void LiveParameters::saveInto(SceneDocument& document) {
+std::vector<edit::SceneEdit> LiveParameters::saveEdits(const SceneDocument& document) const {
+  std::vector<edit::SceneEdit> out;
   const bool dynamics = get("dynamics") != 0;
   for (const Control& c : controls_) {
     if (c.spec->field.empty()) continue;
     const double value = c.spec->name == "epsilon" && !dynamics ? 0.0 : c.value;
-    if (document.parameter(c.spec->name) != value) document.apply(edit::SetParameter{c.spec->name, value});
+    if (document.parameter(c.spec->name) != value) out.push_back(edit::SetParameter{c.spec->name, value});
   }
   const double scale = get("kappa_scale");
-  if (scale != savedKappaScale_) document.apply(edit::ScaleStiffness{scale / savedKappaScale_});
-  savedKappaScale_ = scale;
+  if (scale != savedKappaScale_) out.push_back(edit::ScaleStiffness{scale / savedKappaScale_});
+  return out;
+}
+
+void LiveParameters::markSaved() { savedKappaScale_ = get("kappa_scale"); }
+
+void LiveParameters::saveInto(SceneDocument& document) {
+  for (const edit::SceneEdit& e : saveEdits(document)) document.apply(e);
+  markSaved();
 }
 
 }  // namespace ib::play

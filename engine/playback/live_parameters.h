@@ -8,6 +8,7 @@
 #include "pipeline/scene_frames.h"
 #include "scene/parameters.h"
 #include "scene/scene.h"
+#include "scene/scene_edits.h"
 
 #include <string>
 #include <vector>
@@ -73,6 +74,10 @@ class LiveParameters {
   // of these controls, so that saving twice before the reloaded scene comes back scales once.
   // InputError as the edits say; then nothing is counted as saved.
   void saveInto(SceneDocument& document);
+  // The edits saveInto makes of `document`, for an owner that applies them itself (the editor's
+  // document); markSaved() once they are applied.
+  std::vector<edit::SceneEdit> saveEdits(const SceneDocument& document) const;
+  void markSaved();
 
  private:
   Control& find(const std::string& name);

@@ -162,7 +162,8 @@ void PlayerSession::setInitialMap(bool on) {
 
 void PlayerSession::saveParameters() {
   try {
-    play::saveParameters(scenePath(), *parameters_, transport_->fps());
+    if (parameterSaver_) parameterSaver_(*parameters_, transport_->fps());
+    else play::saveParameters(scenePath(), *parameters_, transport_->fps());
     adoptFileParameters_ = true;
     messages_.push_back({"saved the parameters to " + scenePath(), false});
   } catch (const InputError& e) {

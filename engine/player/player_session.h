@@ -10,6 +10,7 @@
 #include "playback/solve_worker.h"
 #include "playback/transport.h"
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -64,7 +65,12 @@ class PlayerSession {
     bool error = false;
   };
   std::vector<Message>& messages() { return messages_; }
-  void saveParameters();  // into the scene file (scene_parameters.h); a failure goes to messages()
+  void saveParameters();  // into the scene file (scene_parameters.h), or the saver's; a failure goes to messages()
+  // Who saves the parameters instead of the scene file (the editor: into its document, then the
+  // document into the file, so that the file and the document agree); null: the file. The saver
+  // throws InputError for a failure.
+  using ParameterSaver = std::function<void(LiveParameters& parameters, double fps)>;
+  void setParameterSaver(ParameterSaver saver) { parameterSaver_ = std::move(saver); }
 
  private:
   void rebuild(bool keepParameters);  // render mesh, parameters, transport and worker of the current scene
@@ -86,6 +92,7 @@ class PlayerSession {
   std::vector<Message> messages_;
   double sincePoll_ = 0;            // s since the files were last checked for changes
   bool adoptFileParameters_ = false;  // after a save: the reloaded file holds the tuned values
+  ParameterSaver parameterSaver_;
 };
 
 }  // namespace ib::play
