@@ -9,6 +9,7 @@
 #include "testkit/drawings.h"
 
 #include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -33,6 +34,7 @@ TEST_CASE("edit script: every kind of operation applies, and undoing them all re
     {"op": "add_interior_feature", "key": "closed", "name": "eye", "at": [128, 70], "radius": 5},
     {"op": "add_interior_feature", "key": "open", "name": "eye", "at": [128, 70]},
     {"op": "move_interior_feature", "key": "open", "name": "eye", "at": [127, 71]},
+    {"op": "set_interior_radius", "name": "eye", "radius": 7},
     {"op": "remove_interior_feature", "name": "eye"},
     {"op": "add_cut", "key": "closed", "name": "slot", "kind": "slit", "points": [[100, 160], [150, 160]]},
     {"op": "remove_cut", "name": "slot"},
@@ -113,4 +115,29 @@ TEST_CASE("edit script: features snap onto the outline the mesher traces, a hole
                                        {"op": "add_feature", "key": "b", "name": "belly", "at": [64, 61]}])", "ops.json"),
                   "ops.json");
   CHECK(doc.scene().keys[0].features.at("belly").y() == Approx(58).margin(1.5));
+}
+
+TEST_CASE("edit script: set_interior_radius sets the radius in every key that gives one, else in the first key that "
+          "places the feature; out of range is refused naming it") {
+  const std::filesystem::path chomp = std::filesystem::path(INBETWEEN_SOURCE_DIR) / "tests" / "topology" / "chomp";
+  SceneDocument doc = SceneDocument::load((chomp / "scene.json").string());
+  const auto apply = [&](const std::string& ops) { applyEditScript(doc, readEditOps(ops, "ops.json"), "ops.json"); };
+  apply(R"([{"op": "add_interior_feature", "key": "closed", "name": "eye", "at": [128, 70]},
+            {"op": "add_interior_feature", "key": "open", "name": "eye", "at": [128, 70]},
+            {"op": "set_interior_radius", "name": "eye", "radius": 6}])");
+  REQUIRE_FALSE(doc.problem());
+  CHECK(doc.scene().keys[1].interiorRadii.at("eye") == Approx(6));  // given once, it is every key's
+  const nlohmann::json json = nlohmann::json::parse(doc.json());
+  CHECK(json["keys"][0]["interior_features"]["eye"]["radius"] == 6);
+  CHECK(json["keys"][1]["interior_features"]["eye"].is_array());  // the open key's stays a point
+  apply(R"([{"op": "add_interior_feature", "key": "open", "name": "eye", "at": [128, 70], "radius": 6},
+            {"op": "set_interior_radius", "name": "eye", "radius": 9}])");
+  REQUIRE_FALSE(doc.problem());
+  CHECK(doc.scene().keys[0].interiorRadii.at("eye") == Approx(9));
+  CHECK(doc.scene().keys[1].interiorRadii.at("eye") == Approx(9));
+  const std::string before = doc.text();
+  CHECK_THROWS_WITH(apply(R"([{"op": "set_interior_radius", "name": "eye", "radius": 5000}])"),
+                    Catch::Contains("ops.json") && Catch::Contains("interior feature \"eye\": radius 5000 px is out of range"));
+  CHECK_THROWS_WITH(apply(R"([{"op": "set_interior_radius", "name": "ear", "radius": 5}])"), Catch::Contains("no interior feature \"ear\""));
+  CHECK(doc.text() == before);
 }

@@ -1,8 +1,8 @@
 // The editor's window (`inbetween edit`) under Xvfb, driven by real X input (xdotool): a new
 // scene made from square-arch-notch's two drawings gets a feature clicked onto both outlines, the
 // feature dragged along one, a notch cut drawn with its three features placed where it is open,
-// an interior feature with a dragged radius, a painted stiffness stroke, undo, and Ctrl+S; the
-// saved scene then meshes and renders with `inbetween`. Screenshots (the temporary folder) show
+// an interior feature with a dragged radius (its rim dragged again), a painted stiffness stroke,
+// undo, and Ctrl+S; the saved scene then meshes and renders with `inbetween`. Screenshots (the temporary folder) show
 // the coloured arcs and labels, and are measured.
 #include "editor/editor_session.h"
 #include "editor/editor_view.h"
@@ -156,6 +156,20 @@ TEST_CASE("editor window: features clicked onto two keys' outlines, dragged, a c
   REQUIRE(editing.marks().keys[0].interior.count("detail1"));
   REQUIRE(editing.marks().keys[1].interior.count("detail1"));
   CHECK(editing.marks().keys[0].radii.at("detail1") == Approx(6).margin(1.0));
+  // Its rim dragged out by 3 px in the second key: the radius changes in both.
+  dragInterior(live, view, 1, 46, 40, 3);
+  CHECK(editing.marks().keys[0].radii.at("detail1") == Approx(9).margin(1.0));
+  CHECK(editing.marks().keys[1].radii.at("detail1") == Approx(9).margin(1.0));
+  CHECK(editing.marks().keys[1].interior.at("detail1").x() == Approx(40).margin(1.0));  // the point stays
+  // The Edit tab's Undo and Redo buttons, clicked.
+  for (const char* button : {"Undo", "Redo"}) {
+    const std::optional<Eigen::Vector2d> c = view.buttonCentre(button);
+    REQUIRE(c);
+    live.send("mousemove --window " + std::to_string(std::lround(c->x())) + " " + std::to_string(std::lround(c->y())) +
+              " click 1");
+    live.frames(3);
+    CHECK(editing.marks().keys[1].radii.at("detail1") == Approx(std::string(button) == "Undo" ? 6 : 9).margin(1.0));
+  }
 
   // A second interior feature too near the square's outline: the rebuild fails, its message names
   // the feature, the last good animation stays; undone, the next build clears the message.

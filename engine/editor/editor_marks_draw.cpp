@@ -110,7 +110,7 @@ void EditorView::keyMarks(int key) {
     draw->AddLine(ImVec2(c.x, c.y - 6), ImVec2(c.x, c.y + 6), colour, 2);
     label(draw, ImVec2(c.x + 7, c.y + 3), name, named(buildError_, marks.name, name) ? kWrongOrder : colour);
   }
-  if (dragging_ && selectedInterior_ && selectedKey_ == key && !marks.interior.count(selected_)) {
+  if (dragging_ && selectedInterior_ && selectedKey_ == key && (draggingRadius_ || !marks.interior.count(selected_))) {
     draw->AddCircle(at(dragAt_), static_cast<float>((hover_ - dragAt_).norm() * scale), kSelected, 0, 2);
     draw->AddCircleFilled(at(dragAt_), 3, kSelected);
   }

@@ -99,13 +99,20 @@ void EditorView::panel() {
   // Whether each can act, read once: the click changes it before the disabled scope ends.
   const bool canUndo = doc.canUndo(), canRedo = doc.canRedo();
   const std::string undoLabel = doc.undoLabel(), redoLabel = doc.redoLabel();
+  // Where each button was drawn, for tests that click it (buttonCentre).
+  const auto drawnAt = [this](const char* name) {
+    const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
+    buttons_[name] = {lo.x, lo.y, hi.x, hi.y};
+  };
   ImGui::BeginDisabled(!canUndo);
   if (ImGui::Button("Undo")) shortcut(90, true, false);
+  drawnAt("Undo");
   ImGui::EndDisabled();
   if (canUndo && ImGui::IsItemHovered()) ImGui::SetTooltip("Ctrl+Z: %s", undoLabel.c_str());
   ImGui::SameLine();
   ImGui::BeginDisabled(!canRedo);
   if (ImGui::Button("Redo")) shortcut(90, true, true);
+  drawnAt("Redo");
   ImGui::EndDisabled();
   if (canRedo && ImGui::IsItemHovered()) ImGui::SetTooltip("Ctrl+Shift+Z: %s", redoLabel.c_str());
   ImGui::SameLine();

@@ -116,6 +116,12 @@ void EditorView::interiorInput(int key, const Eigen::Vector2d& p, bool pressed, 
     selected_.clear();
     for (const auto& [name, at] : marks.interior)
       if ((at - p).norm() <= kGrabScreenPixels * unit) selected_ = name, dragAt_ = at;
+    // Not on a point: on a disc's rim, its radius is dragged.
+    for (const auto& [name, at] : marks.interior) {
+      const auto r = marks.radii.find(name);
+      if (selected_.empty() && r != marks.radii.end() && std::abs((at - p).norm() - r->second) <= kGrabScreenPixels * unit)
+        selected_ = name, dragAt_ = at, draggingRadius_ = true;
+    }
     if (selected_.empty()) {
       for (const MissingFeature& m : missingFeatures(session_.marks(), -1))
         if (m.key == marks.name && m.interior) {
@@ -130,6 +136,13 @@ void EditorView::interiorInput(int key, const Eigen::Vector2d& p, bool pressed, 
   }
   if (!dragging_ || !released) return;
   dragging_ = false;
+  if (draggingRadius_) {  // the same radius in every key (edit::SetInteriorRadius)
+    draggingRadius_ = false;
+    const double radius = std::clamp((p - dragAt_).norm(), kMinInteriorRadius, kMaxInteriorRadius);
+    const auto r = marks.radii.find(selected_);
+    if (r != marks.radii.end() && std::abs(radius - r->second) * pixelsPerUnit(key) > 1) run(edit::SetInteriorRadius{selected_, radius});
+    return;
+  }
   const auto existing = marks.interior.find(selected_);
   if (existing != marks.interior.end()) {  // moved: the radius stays
     const double moved = (p - dragAt_).norm();

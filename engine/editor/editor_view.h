@@ -15,6 +15,7 @@
 #include "renderers/drawing_sheet.h"
 
 #include <chrono>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -98,6 +99,12 @@ class EditorView {
 
   // Window pixel of key k's drawing point p, and the key's view (tests aim their clicks with it).
   Eigen::Vector2d toScreen(int key, const Eigen::Vector2d& p) const;
+  // Window pixel of the centre of the Edit tab's "Undo" or "Redo" button as last drawn; none before.
+  std::optional<Eigen::Vector2d> buttonCentre(const std::string& name) const {
+    const auto it = buttons_.find(name);
+    if (it == buttons_.end()) return std::nullopt;
+    return Eigen::Vector2d((it->second.x0 + it->second.x1) / 2, (it->second.y0 + it->second.y1) / 2);
+  }
 
  private:
   struct KeyView {
@@ -138,6 +145,7 @@ class EditorView {
   std::string selected_;          // a feature of selectedKey_
   bool selectedInterior_ = false;
   bool dragging_ = false;
+  bool draggingRadius_ = false;   // the Interior tool's drag of a disc's rim (dragAt_: its centre)
   Eigen::Vector2d dragAt_ = Eigen::Vector2d::Zero();
   int cutKey_ = -1;
   Polyline cutPoints_;
@@ -162,6 +170,7 @@ class EditorView {
   double latencyMs_ = -1;
   std::string status_;
   bool statusError_ = false;
+  std::map<std::string, play::PixelRect> buttons_;  // buttonCentre's, by label
   std::string buildError_;
   size_t messagesRead_ = 0;  // of the player's messages
   bool closeAsked_ = false;

@@ -105,6 +105,9 @@ EditOp readOp(const Json& j, int index, const std::string& where) {
     r.only({"key", "name", "at", "radius"});
     op.edit = edit::SetInteriorFeature{r.text("key"), r.text("name"), r.point("at"),
                                        r.has("radius") ? std::optional<double>(r.positive("radius")) : std::nullopt};
+  } else if (o == "set_interior_radius") {
+    r.only({"name", "radius"});
+    op.edit = edit::SetInteriorRadius{r.text("name"), r.positive("radius")};
   } else if (o == "remove_interior_feature") {
     r.only({"key", "name"});
     op.edit = edit::RemoveInteriorFeature{r.text("name"), r.optionalText("key")};
@@ -161,7 +164,7 @@ EditOp readOp(const Json& j, int index, const std::string& where) {
 const std::vector<std::string>& editOpNames() {
   static const std::vector<std::string> names{
       "add_key", "remove_key", "add_feature", "move_feature", "remove_feature", "rename_feature",
-      "add_interior_feature", "move_interior_feature", "remove_interior_feature", "add_cut", "remove_cut",
+      "add_interior_feature", "move_interior_feature", "set_interior_radius", "remove_interior_feature", "add_cut", "remove_cut",
       "paint_stiffness", "add_mark", "move_mark", "set_mark_key", "set_mark_ease", "set_reference", "set_drawing",
       "set_cut_release", "set"};
   return names;

@@ -173,6 +173,7 @@ void applyEdit(Json& root, const SceneEdit& edit) {
                         [&](const SetInteriorFeature&) { applyKeyEdit(root, edit); },
                         [&](const RemoveInteriorFeature&) { applyKeyEdit(root, edit); },
                         [&](const RenameInteriorFeature&) { applyKeyEdit(root, edit); },
+                        [&](const SetInteriorRadius&) { applyKeyEdit(root, edit); },
                         [&](const AddMark&) { applyMarkEdit(root, edit); }, [&](const MoveMark&) { applyMarkEdit(root, edit); },
                         [&](const RemoveMark&) { applyMarkEdit(root, edit); },
                         [&](const SetMarkKey&) { applyMarkEdit(root, edit); },
@@ -255,6 +256,25 @@ void applyKeyEdit(Json& root, const SceneEdit& edit) {
             checkName(e.to, "interior feature", true);
             renameNamed(root, "interior_features", "interior feature", e.from, e.to);
           },
+          [&](const SetInteriorRadius& e) {
+            if (!(e.radius >= kMinInteriorRadius && e.radius <= kMaxInteriorRadius))
+              throw InputError("interior feature " + q(e.name) + ": radius " + shortestText(e.radius) + " px is out of range [" +
+                               shortestText(kMinInteriorRadius) + ", " + shortestText(kMaxInteriorRadius) + "]");
+            std::vector<Json*> placing;  // the feature's value in each key that places it
+            std::vector<std::string> known;
+            for (Json& k : keys(root)) {
+              if (!k.contains("interior_features") || !k["interior_features"].is_object()) continue;
+              Json& object = k["interior_features"];
+              for (auto it = object.begin(); it != object.end(); ++it) known.push_back(it.key());
+              if (object.contains(e.name)) placing.push_back(&object[e.name]);
+            }
+            if (placing.empty()) notFound("interior feature", e.name, known);
+            const Json radius = pointJson({e.radius, 0})[0];
+            bool given = false;
+            for (Json* value : placing)
+              if (value->is_object() && value->contains("radius")) (*value)["radius"] = radius, given = true;
+            if (!given) *placing.front() = Json{{"at", *placing.front()}, {"radius", radius}};
+          },
           [&](const auto&) { throw std::logic_error("applyKeyEdit: not a key edit"); }},
       edit);
 }
@@ -275,6 +295,7 @@ std::string describe(const SceneEdit& edit) {
           [&](const SetInteriorFeature& e) { out << "place interior feature " << q(e.name) << " in key " << q(e.key); },
           [&](const RemoveInteriorFeature& e) { out << "remove interior feature " << q(e.name); },
           [&](const RenameInteriorFeature& e) { out << "rename interior feature " << q(e.from) << " to " << q(e.to); },
+          [&](const SetInteriorRadius& e) { out << "set the radius of interior feature " << q(e.name) << " to " << shortestText(e.radius) << " px"; },
           [&](const AddCut& e) { out << "add " << e.kind << " cut " << q(e.name) << " in key " << q(e.key); },
           [&](const RemoveCut& e) { out << "remove cut " << q(e.name); },
           [&](const RenameCut& e) { out << "rename cut " << q(e.from) << " to " << q(e.to); },

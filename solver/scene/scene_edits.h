@@ -33,6 +33,9 @@ struct RenameFeature { std::string from, to; };   // in every key
 struct SetInteriorFeature { std::string key, name; Point at; std::optional<double> radius = std::nullopt; };
 struct RemoveInteriorFeature { std::string name, key; };  // key empty: from every key
 struct RenameInteriorFeature { std::string from, to; };
+// The disc's radius (px) in every key that gives the feature one, or the first key that places it
+// when none does: the scene's rule is one radius, given once or the same wherever given.
+struct SetInteriorRadius { std::string name; double radius = 0; };
 
 // Cuts (kind "notch", "split" or "slit"), drawn in the keys where the shape is closed along them.
 // Renaming or removing a cut does the same to the features it creates (NAME.left, ...) in the
@@ -87,7 +90,7 @@ struct SetParameter { std::string name; double value; };
 struct ResetParameter { std::string name; };
 
 using SceneEdit =
-    std::variant<AddKey, RemoveKey, RenameKey, MoveKey, SetReference, SetKeyDrawing, SetFeature, RemoveFeature, RenameFeature, SetInteriorFeature,
+    std::variant<AddKey, RemoveKey, RenameKey, MoveKey, SetReference, SetKeyDrawing, SetFeature, RemoveFeature, RenameFeature, SetInteriorFeature, SetInteriorRadius,
                  RemoveInteriorFeature, RenameInteriorFeature, AddCut, RemoveCut, RenameCut, MoveCutPoint, InsertCutPoint,
                  RemoveCutPoint, AddHole, MoveHole, RemoveHole, AddStiffnessRegion, AddStiffnessStroke, RemoveStiffness,
                  RenameStiffness, MoveStiffnessPoint, SetStiffnessKappa, ScaleStiffness, AddMark, MoveMark, RemoveMark, SetMarkKey,
