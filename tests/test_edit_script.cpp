@@ -140,4 +140,14 @@ TEST_CASE("edit script: set_interior_radius sets the radius in every key that gi
                     Catch::Contains("ops.json") && Catch::Contains("interior feature \"eye\": radius 5000 px is out of range"));
   CHECK_THROWS_WITH(apply(R"([{"op": "set_interior_radius", "name": "ear", "radius": 5}])"), Catch::Contains("no interior feature \"ear\""));
   CHECK(doc.text() == before);
+  // Written as an object without a radius: the radius joins it.
+  nlohmann::json root = nlohmann::json::parse(doc.json());
+  for (auto& key : root["keys"]) key["interior_features"]["ear"] = {{"at", {100, 90}}};
+  SceneDocument objects = SceneDocument::fromText(root.dump(), (chomp / "scene.json").string());
+  REQUIRE_FALSE(objects.problem());
+  applyEditScript(objects, readEditOps(R"([{"op": "set_interior_radius", "name": "ear", "radius": 4}])", "ops.json"), "ops.json");
+  REQUIRE_FALSE(objects.problem());
+  const nlohmann::json after = nlohmann::json::parse(objects.json());
+  CHECK(after["keys"][0]["interior_features"]["ear"] == nlohmann::json({{"at", {100, 90}}, {"radius", 4}}));
+  CHECK(after["keys"][1]["interior_features"]["ear"] == nlohmann::json({{"at", {100, 90}}}));
 }

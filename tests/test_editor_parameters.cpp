@@ -13,7 +13,7 @@
 using namespace ib;
 namespace fs = std::filesystem;
 
-TEST_CASE("editor: Save parameters puts the live values into the document and the file, one undo step each") {
+TEST_CASE("editor: Save parameters puts the live values into the document, as one undo step, and the file") {
   const fs::path folder = fs::path(test::scratchDirectory("editor-parameters")) / "square-hexagon";
   fs::copy(fs::path(INBETWEEN_ASSETS) / "square-hexagon", folder, fs::copy_options::recursive);
   const std::string file = (folder / "scene.json").string();
@@ -23,6 +23,7 @@ TEST_CASE("editor: Save parameters puts the live values into the document and th
   {
     editor::EditorView view(editing, session);
     session.parameters().set("lambda", before * 4);
+    session.parameters().set("alpha", 0.37);
     session.saveParameters();
     for (const auto& m : session.messages()) CHECK_FALSE(m.error);
     CHECK(editing.document().parameter("lambda") == before * 4);
@@ -31,8 +32,9 @@ TEST_CASE("editor: Save parameters puts the live values into the document and th
     // The document's own save keeps it (it held the old value before: the file would lose it).
     editing.save();
     CHECK(SceneDocument::load(file).parameter("lambda") == before * 4);
-    editing.undo();
+    editing.undo();  // both values at once
     CHECK(editing.document().parameter("lambda") == before);
+    CHECK(editing.document().parameter("alpha") != 0.37);
   }
   // Without the editor, the player saves into the file as before.
   session.parameters().set("lambda", before * 2);

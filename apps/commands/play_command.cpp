@@ -7,7 +7,6 @@
 #include "editor/editor_session.h"
 #include "editor/editor_view.h"
 #include "gpu/vulkan_check.h"
-#include "playback/scene_parameters.h"
 #include "player/player_window.h"
 #include "progress.h"
 
@@ -185,7 +184,7 @@ int runPlayerWindow(const std::vector<std::string>& rawArgs, bool edit) {
     requireSilentValidation(*window, windowOptions.validation);
     if (!screenshot.empty()) std::printf("%s: %d frames presented; wrote %s\n", scenePath.c_str(), frames, screenshot.c_str());
     if (save) {  // what the Save parameters button does, with its error as this command's
-      play::saveParameters(scenePath, session.parameters(), session.transport().fps());
+      session.writeParameters();  // in edit mode into the document, then the file
       std::printf("%s: saved the parameters\n", scenePath.c_str());
     }
     return 0;

@@ -100,6 +100,11 @@ void EditorSession::apply(const edit::SceneEdit& edit) {
   changed();
 }
 
+void EditorSession::applyAll(const std::vector<edit::SceneEdit>& edits) {
+  document_.applyAll(edits);
+  changed();
+}
+
 void EditorSession::undo() {
   if (!document_.canUndo()) return;
   document_.undo();

@@ -43,6 +43,7 @@ class EditorSession {
 
   // Applies an edit. InputError (the document's message) when it cannot apply: nothing changes.
   void apply(const edit::SceneEdit& edit);
+  void applyAll(const std::vector<edit::SceneEdit>& edits);  // as one undo step, all or none
   void undo();
   void redo();
   void save();  // atomically, in the file's layout; InputError naming the file

@@ -112,6 +112,7 @@ void EditorView::interiorInput(int key, const Eigen::Vector2d& p, bool pressed, 
     selectedKey_ = key;
     selectedInterior_ = true;
     dragging_ = true;
+    draggingRadius_ = false;
     dragAt_ = p;
     selected_.clear();
     for (const auto& [name, at] : marks.interior)

@@ -21,12 +21,12 @@ constexpr double kIdleBeforeOptimizing = 1.5;  // s without an edit before the C
 EditorView::EditorView(EditorSession& session, play::PlayerSession& player) : session_(session), player_(player) {
   loadDrawings();
   sentGeneration_ = session_.generation();  // the player built the scene as opened
-  // The live parameters go into the document (undoable, like any edit), and the document into the
+  // The live parameters go into the document (one undoable edit), and the document into the
   // file: the file never gets ahead of the document, which a later save would write back.
   player_.setParameterSaver([this](play::LiveParameters& parameters, double fps) {
     std::vector<edit::SceneEdit> edits = parameters.saveEdits(session_.document());
     if (session_.document().parameter("fps") != fps) edits.push_back(edit::SetParameter{"fps", fps});
-    for (const edit::SceneEdit& e : edits) session_.apply(e);
+    session_.applyAll(edits);  // one undo step; none of them when one fails
     parameters.markSaved();
     session_.save();
   });
@@ -192,7 +192,7 @@ bool EditorView::shortcut(int key, bool ctrl, bool shift) {
     if (shift) session_.redo();
     else session_.undo();
     editTime_ = std::chrono::steady_clock::now();
-    dragging_ = false;
+    dragging_ = draggingRadius_ = false;
     return true;
   }
   if (ctrl && key == kS) {

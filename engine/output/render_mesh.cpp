@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <map>
 #include <set>
 #include <stdexcept>
@@ -84,10 +85,18 @@ RenderMesh renderMeshOf(const Multimesh& mesh, std::vector<RgbaImage> artwork, s
     if (f < 0 || f >= out.vertexCount) throw std::invalid_argument("render: feature vertex " + std::to_string(f) + " is not in the mesh");
   out.features = std::move(features);
   out.inks = cutInksOf(mesh, artwork);
-  // Each key's on its own, in parallel.
+  // Each key's on its own, in parallel; an exception (out of memory) is rethrown here.
+  std::exception_ptr failed;
 #pragma omp parallel for schedule(dynamic)
-  for (int k = 0; k < mesh.keyCount(); ++k)
-    artwork[k] = silhouetteArtwork(artwork[k], out.triangles, mesh.boundaryEdges(), mesh.keyPositions(k), silhouette);
+  for (int k = 0; k < mesh.keyCount(); ++k) {
+    try {
+      artwork[k] = silhouetteArtwork(artwork[k], out.triangles, mesh.boundaryEdges(), mesh.keyPositions(k), silhouette);
+    } catch (...) {
+#pragma omp critical(render_mesh_failed)
+      if (!failed) failed = std::current_exception();
+    }
+  }
+  if (failed) std::rethrow_exception(failed);
   out.artwork = std::move(artwork);
   return out;
 }

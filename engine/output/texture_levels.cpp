@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <exception>
 #include <stdexcept>
 #include <string>
 
@@ -89,9 +90,11 @@ TextureLevels textureLevels(const std::vector<RgbaImage>& drawings) {
     if (w == 1 && h == 1) break;
   }
   out.texels.assign(bytes, 0);
-  // Every layer on its own, in parallel: each writes only its own texels.
+  // Every layer on its own, in parallel: each writes only its own texels. An exception (out of
+  // memory) is rethrown here.
+  std::exception_ptr failed;
 #pragma omp parallel for schedule(dynamic)
-  for (int k = 0; k < out.layers; ++k) {
+  for (int k = 0; k < out.layers; ++k) try {
     const RgbaImage& d = drawings[static_cast<size_t>(k)];
     const size_t layer0 = static_cast<size_t>(width) * height * 4 * k;
     for (int y = 0; y < d.height; ++y) {
@@ -109,7 +112,11 @@ TextureLevels textureLevels(const std::vector<RgbaImage>& drawings) {
       downsample(out.texels.data() + a.offset + static_cast<size_t>(a.width) * a.height * 4 * k, a.width, a.height,
                  out.texels.data() + b.offset + static_cast<size_t>(b.width) * b.height * 4 * k, b.width, b.height);
     }
+  } catch (...) {
+#pragma omp critical(texture_levels_failed)
+    if (!failed) failed = std::current_exception();
   }
+  if (failed) std::rethrow_exception(failed);
   return out;
 }
 

@@ -108,11 +108,13 @@ Loaded load(const Job& job, const Loaded* last, TraceCache* traces, const Pipeli
     options.comesh = job.comesh;
     options.threads = job.threads;
     options.traceCache = traces;
-    // An edit's quick build, a preview: each key's map starts from the last one's initial map
-    // (its triangles are much like the new mesh's; Comesh's are not, and carry folds over).
+    // An edit's quick build, a preview: each key's map starts from the last scene's initial map
+    // (built, or the file beside the scene, no older than its drawings: initialBeside). Its
+    // triangles are much like the new mesh's; Comesh's are not, and carry folds over: without an
+    // initial map, none.
     PreviousMap previous;
-    if (urgent(job) && last && last->scene)
-      previous = previousMap(last->scene->scene, last->scene->initial ? last->scene->initial : last->scene->mesh, scene);
+    if (urgent(job) && last && last->scene && last->scene->initial)
+      previous = previousMap(last->scene->scene, last->scene->initial, scene);
     if (previous.mesh) options.previous = &previous;
     LoadedScene fresh = built(std::move(scene), options, progress);
     fresh.build = job.id;
@@ -150,6 +152,7 @@ struct SceneReloader::State {
   Loaded lastGood;                        // the last good load (taken or not)
   std::string buildingPath;               // the running build's scene file
   bool runningOptimizedText = false;      // the running build is an editor's text with Comesh
+  bool runningUrgent = false;             // the running build is an editor's quick one (urgent())
   TraceCache traces;                      // the builds' thread only (one build at a time)
   bool running = false;
   bool queued = false;                    // another build after the running one
@@ -194,6 +197,7 @@ void SceneReloader::State::launch(Job job) {
     running = true;
     buildingPath = job.path;
     runningOptimizedText = job.text && job.comesh;
+    runningUrgent = urgent(job);
     cancel = false;
     progress = 0;
     stage = "loading";
@@ -224,6 +228,7 @@ void SceneReloader::State::run(Job job) {
       std::lock_guard<std::mutex> lock(mutex);
       buildingPath = path;
       runningOptimizedText = job.text && job.comesh;
+      runningUrgent = urgent(job);
       files = path == watchedPath ? watchedFiles : std::vector<std::string>{path};
       last = lastGood;
     }
@@ -274,12 +279,14 @@ void SceneReloader::State::run(Job job) {
       queued = false;
       job = std::move(queuedJob);
       runningOptimizedText = job.text && job.comesh;  // under the lock, before a rebuildFromText can look
+      runningUrgent = urgent(job);
       progress = 0;
       stage = "loading";
       continue;
     }
     running = false;
     runningOptimizedText = false;
+    runningUrgent = false;
     progress = 1;
     stage.clear();
     return;
@@ -376,6 +383,11 @@ bool SceneReloader::busy() const {
   state_->launchHandedOff();  // a caller waiting for the builds to end starts a handed-off one
   std::lock_guard<std::mutex> lock(state_->mutex);
   return state_->running || state_->queued;
+}
+
+bool SceneReloader::previewing() const {
+  std::lock_guard<std::mutex> lock(state_->mutex);
+  return (state_->running && state_->runningUrgent) || (state_->queued && urgent(state_->queuedJob));
 }
 
 double SceneReloader::progress() const {

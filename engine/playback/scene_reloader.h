@@ -80,6 +80,7 @@ class SceneReloader {
   std::optional<std::string> takeError();
 
   bool busy() const;          // a rebuild is running or queued
+  bool previewing() const;    // an editor's quick build (rebuildFromText without Comesh) is running or queued
   double progress() const;    // the running rebuild's fraction in [0, 1]; 1 when idle
   std::string stage() const;  // the running rebuild's stage, e.g. "tracing arch"; empty when idle
 

@@ -41,7 +41,6 @@ void PlayerSession::rebuild(bool keepParameters) {
       if (c.value != c.initial) tuned[c.spec->name] = c.value;
   if (!hasInitialMap()) initialMap_ = false;
   const std::shared_ptr<const Multimesh> played = initialMap_ ? loaded.initial : loaded.mesh;
-  previousMesh_ = std::move(renderMesh_);
   // The scene's multimesh comes with its render mesh, made off this thread; the initial map's is
   // made here (the user switched to it).
   renderMesh_ = initialMap_ ? playerRenderMesh(loaded.scene, *played, loaded.drawings, featureVertices(loaded.scene, *played))
@@ -89,7 +88,6 @@ void PlayerSession::sendParameters() {
 
 bool PlayerSession::update(double seconds) {
   bool meshChanged = false;
-  previousMesh_.reset();  // the window draws the current one by now
   sincePoll_ += seconds;
   if (sincePoll_ >= kPollSeconds) {
     sincePoll_ = 0;
@@ -111,8 +109,9 @@ bool PlayerSession::update(double seconds) {
     meshChanged = true;
   }
   if (parameters_->generation() != sentGeneration_) sendParameters();
-  // A rebuild (an edit's) gets the cores the worker would spend on frames nobody asked for yet.
-  worker_->setSolveAhead(!reloader_->busy());
+  // An edit's quick rebuild gets the cores the worker would spend on frames nobody asked for yet
+  // (the slower builds run below the worker's priority and leave it be).
+  worker_->setSolveAhead(!reloader_->previewing());
   if (!weightsMode_) {
     const int frame = transport_->advance(seconds);
     if (frame != requestedFrame_) {
@@ -160,11 +159,15 @@ void PlayerSession::setInitialMap(bool on) {
   initialMapChanged_ = true;
 }
 
+void PlayerSession::writeParameters() {
+  if (parameterSaver_) parameterSaver_(*parameters_, transport_->fps());
+  else play::saveParameters(scenePath(), *parameters_, transport_->fps());
+  adoptFileParameters_ = true;
+}
+
 void PlayerSession::saveParameters() {
   try {
-    if (parameterSaver_) parameterSaver_(*parameters_, transport_->fps());
-    else play::saveParameters(scenePath(), *parameters_, transport_->fps());
-    adoptFileParameters_ = true;
+    writeParameters();
     messages_.push_back({"saved the parameters to " + scenePath(), false});
   } catch (const InputError& e) {
     messages_.push_back({std::string("saving failed: ") + e.what(), true});

@@ -65,7 +65,8 @@ class PlayerSession {
     bool error = false;
   };
   std::vector<Message>& messages() { return messages_; }
-  void saveParameters();  // into the scene file (scene_parameters.h), or the saver's; a failure goes to messages()
+  void saveParameters();   // into the scene file (scene_parameters.h), or the saver's; a failure goes to messages()
+  void writeParameters();  // the same, throwing its InputError (a scripted run's --save)
   // Who saves the parameters instead of the scene file (the editor: into its document, then the
   // document into the file, so that the file and the document agree); null: the file. The saver
   // throws InputError for a failure.
@@ -79,7 +80,7 @@ class PlayerSession {
 
   std::unique_ptr<SceneReloader> reloader_;
   SolveWorker::Options options_;
-  std::shared_ptr<const render::RenderMesh> renderMesh_, previousMesh_;  // the previous one lives a frame longer
+  std::shared_ptr<const render::RenderMesh> renderMesh_;  // the window's renderer copies what it draws
   std::unique_ptr<LiveParameters> parameters_;
   std::unique_ptr<Transport> transport_;
   std::unique_ptr<SolveWorker> worker_;

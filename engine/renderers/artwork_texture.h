@@ -11,16 +11,31 @@
 #include "gpu/gpu_resources.h"
 #include "output/texture_levels.h"
 
+#include <utility>
 #include <vector>
 
 namespace ib::vk {
 
 struct ArtworkTexture {
+  ArtworkTexture() = default;
+  ArtworkTexture(ArtworkTexture&&) noexcept = default;
+  // Waits for this texture's copy before its image goes (the implicit one would replace the
+  // image first).
+  ArtworkTexture& operator=(ArtworkTexture&& other) noexcept {
+    upload = std::move(other.upload);
+    image = std::move(other.image);
+    linear = std::move(other.linear);
+    nearest = std::move(other.nearest);
+    layerSize = other.layerSize;
+    return *this;
+  }
+
   GpuImage image;           // layers = keys, every mip level in VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL
   SamplerObject linear;     // trilinear, clamped to the edge
   SamplerObject nearest;    // nearest texel of the nearest mip level, clamped to the edge
   VkExtent2D layerSize{};   // pixels
-  Submission upload;        // the copy into `image`, on the queue (keeps its staging buffer until done)
+  Submission upload;        // the copy into `image`, on the queue (keeps its staging buffer until done);
+                            // last, so that it is destroyed (waited for) first
 };
 
 // The copy is submitted, not waited for: draws submitted after it to the same queue sample the

@@ -54,9 +54,9 @@ using Overlay = std::function<void(VkCommandBuffer)>;
 
 class WindowPresenter {
  public:
-  // Opens the window and the Vulkan context on it. The mesh must outlive the presenter (or be
-  // replaced by setMesh). Throws WindowError (no display) or VulkanError (no device that presents
-  // to the window).
+  // Opens the window and the Vulkan context on it, and uploads `mesh` (the renderer copies what
+  // it draws). Throws WindowError (no display) or VulkanError (no device that presents to the
+  // window).
   WindowPresenter(const RenderMesh& mesh, const WindowOptions& options);
   ~WindowPresenter();
   WindowPresenter(const WindowPresenter&) = delete;
@@ -120,7 +120,7 @@ class WindowPresenter {
   std::shared_ptr<const vk::RendererPipelines> pipelines_;  // for pass_ and samples_, every mesh's
   std::unique_ptr<MeshRenderer> renderer_;
   std::unique_ptr<MeshRenderer> prepared_;  // prepareMesh's, until usePreparedMesh
-  // Renderers replaced by setMesh, with submitted_ then: released once that submission is done.
+  // Renderers replaced by usePreparedMesh, with submitted_ then: released once that submission is done.
   std::vector<std::pair<std::unique_ptr<MeshRenderer>, uint64_t>> retired_;
   uint64_t submitted_ = 0;  // frames submitted so far
   uint64_t completed_ = 0;  // every submission up to this one has finished (a frame's fence waited)

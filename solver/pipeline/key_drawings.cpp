@@ -13,7 +13,7 @@ std::vector<RgbaImage> readKeyDrawings(const Scene& scene, TraceCache* traces) {
   std::vector<RgbaImage> out;
   for (const KeySpec& key : scene.keys) {
     try {
-      RgbaImage image = traces ? traces->traced(key.drawing, scene.tracing, key.holes).drawing : readPng(key.drawing);
+      RgbaImage image = traces ? traces->drawing(key.drawing) : readPng(key.drawing);
       // On paper: the paper transparent and its antialiased edge un-blended, as traced.
       if (tracedByColour(image, scene.tracing))
         image = paperToAlpha(image, findPaper(image, scene.tracing, key.holes, key.drawing));

@@ -16,7 +16,7 @@ class TraceCache;   // meshing/trace_cache.h
 // antialiasing un-blended from the paper (meshing/paper.h: paperToAlpha), enclosed paper kept
 // opaque unless marked as a hole, so the artwork has the traced shape's holes. Throws
 // InputError naming the scene file, the key and the drawing when one cannot be read or a hole
-// point is misplaced. With `traces`, a drawing it holds (the build before traced it) is not read again.
+// point is misplaced. With `traces`, a drawing it holds (the build before read it) is not read again.
 std::vector<RgbaImage> readKeyDrawings(const Scene& scene, TraceCache* traces = nullptr);
 
 }  // namespace ib

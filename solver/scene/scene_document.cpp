@@ -100,16 +100,23 @@ void SceneDocument::setFromText(const std::string& assignment) {
   }
 }
 
-void SceneDocument::apply(const edit::SceneEdit& change) {
+void SceneDocument::apply(const edit::SceneEdit& change) { applyAll({change}); }
+
+void SceneDocument::applyAll(const std::vector<edit::SceneEdit>& changes) {
+  if (changes.empty()) return;
   Json edited = state_->root;
-  try {
-    applyEdit(edited, change);
-  } catch (const nlohmann::json::exception& e) {  // a part of the file is not of the type the edit needs
-    throw InputError(state_->path + ": cannot " + edit::describe(change) + ": the file's JSON is not as a scene's (" + e.what() +
-                     "); fix the file first");
+  for (const edit::SceneEdit& change : changes) {
+    try {
+      applyEdit(edited, change);
+    } catch (const nlohmann::json::exception& e) {  // a part of the file is not of the type the edit needs
+      throw InputError(state_->path + ": cannot " + edit::describe(change) + ": the file's JSON is not as a scene's (" +
+                       e.what() + "); fix the file first");
+    }
   }
   if (edited == state_->root) return;
-  state_->undo.push_back({std::move(state_->root), edit::describe(change)});
+  std::string label = edit::describe(changes.front());
+  if (changes.size() > 1) label += " and " + std::to_string(changes.size() - 1) + " more";
+  state_->undo.push_back({std::move(state_->root), label});
   state_->redo.clear();
   state_->root = std::move(edited);
   state_->validate();

@@ -15,6 +15,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace ib {
 
@@ -45,6 +46,9 @@ class SceneDocument {
 
   // Applies an edit (see the header comment), recorded for undo; the redo list is cleared.
   void apply(const edit::SceneEdit& edit);
+  // Applies edits in order as one: a single undo step (labelled with the first's description and
+  // how many follow), and none of them when one fails (its InputError).
+  void applyAll(const std::vector<edit::SceneEdit>& edits);
   bool canUndo() const;
   bool canRedo() const;
   std::string undoLabel() const;  // describe() of the edit undo() takes back; empty when none

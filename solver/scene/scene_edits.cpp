@@ -273,7 +273,10 @@ void applyKeyEdit(Json& root, const SceneEdit& edit) {
             bool given = false;
             for (Json* value : placing)
               if (value->is_object() && value->contains("radius")) (*value)["radius"] = radius, given = true;
-            if (!given) *placing.front() = Json{{"at", *placing.front()}, {"radius", radius}};
+            if (given) return;
+            Json& first = *placing.front();  // a bare point, or {"at": [x, y]} without a radius
+            if (first.is_object()) first["radius"] = radius;
+            else first = Json{{"at", first}, {"radius", radius}};
           },
           [&](const auto&) { throw std::logic_error("applyKeyEdit: not a key edit"); }},
       edit);
