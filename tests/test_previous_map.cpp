@@ -35,16 +35,6 @@ double largestDifference(const Multimesh& a, const Multimesh& b, int key) {
   return (a.keyPositions(key) - b.keyPositions(key)).cwiseAbs().maxCoeff();
 }
 
-double smallestArea(const Multimesh& mesh, int key) {
-  double smallest = 1e300;
-  for (const Triangle& t : mesh.triangles()) {
-    const Eigen::MatrixX2d& x = mesh.keyPositions(key);
-    const Eigen::Vector2d u = x.row(t[1]) - x.row(t[0]), v = x.row(t[2]) - x.row(t[0]);
-    smallest = std::min(smallest, 0.5 * (u.x() * v.y() - u.y() * v.x()));
-  }
-  return smallest;
-}
-
 }  // namespace
 
 TEST_CASE("multimesh builder: keys mapped side by side on two threads equal the map of one thread, bit for bit") {
@@ -93,7 +83,7 @@ TEST_CASE("previous map: after a feature moves 3 px, the build from the previous
     REQUIRE(warm->vertexCount() == fresh->vertexCount());
     for (int k = 0; k < warm->keyCount(); ++k) {
       INFO("key " << after.keys[static_cast<size_t>(k)].name);
-      CHECK(smallestArea(*warm, k) > 0);
+      CHECK(smallestTriangleArea(warm->triangles(), warm->keyPositions(k)).first > 0);
       double boundary = 0;
       for (int v = 0; v < warm->vertexCount(); ++v)
         if (warm->onBoundary()[static_cast<size_t>(v)])
@@ -143,18 +133,7 @@ TEST_CASE("previous map: a carried map's fold is untangled where it is; vertices
     if (e[0] == moved || e[1] == moved) neighbour = e[0] == moved ? e[1] : e[0];
   carried.row(moved) += 2.5 * (carried.row(neighbour) - carried.row(moved));
   REQUIRE(smallestTriangleArea(mesh.triangles(), carried).first <= 0);
-  // Vertices within kFoldRings rings of the folded triangles, as untangleCarried counts them.
-  std::vector<char> near(static_cast<size_t>(mesh.vertexCount()), 0);
-  for (const Triangle& t : mesh.triangles())
-    if (signedArea(carried.row(t[0]), carried.row(t[1]), carried.row(t[2])) <= 0)
-      for (int c : t) near[static_cast<size_t>(c)] = 1;
-  for (int ring = 0; ring < kFoldRings; ++ring) {
-    std::vector<char> grown = near;
-    for (const Triangle& t : mesh.triangles())
-      if (near[static_cast<size_t>(t[0])] || near[static_cast<size_t>(t[1])] || near[static_cast<size_t>(t[2])])
-        for (int c : t) grown[static_cast<size_t>(c)] = 1;
-    near.swap(grown);
-  }
+  const std::vector<char> near = foldNeighbourhood(mesh.triangles(), carried, kFoldRings);
   Eigen::MatrixX2d x = carried;
   const UntangleResult r = untangleCarried(mesh.triangles(), rest, x, locked, UntangleOptions{});
   CHECK(r.injective);

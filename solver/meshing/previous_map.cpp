@@ -95,19 +95,24 @@ Eigen::MatrixX2d PreviousMapStart::positions(int key) const {
   return out;
 }
 
-UntangleResult untangleCarried(const std::vector<Triangle>& triangles, const Eigen::MatrixX2d& rest,
-                               Eigen::MatrixX2d& positions, const std::vector<char>& locked, const UntangleOptions& options) {
+std::vector<char> foldNeighbourhood(const std::vector<Triangle>& triangles, const Eigen::MatrixX2d& positions, int rings) {
   std::vector<char> near(static_cast<size_t>(positions.rows()), 0);
   for (const Triangle& t : triangles)
     if (signedArea(positions.row(t[0]), positions.row(t[1]), positions.row(t[2])) <= 0)
       for (int c : t) near[static_cast<size_t>(c)] = 1;
-  for (int ring = 0; ring < kFoldRings; ++ring) {
+  for (int ring = 0; ring < rings; ++ring) {
     std::vector<char> grown = near;
     for (const Triangle& t : triangles)
       if (near[static_cast<size_t>(t[0])] || near[static_cast<size_t>(t[1])] || near[static_cast<size_t>(t[2])])
         for (int c : t) grown[static_cast<size_t>(c)] = 1;
     near.swap(grown);
   }
+  return near;
+}
+
+UntangleResult untangleCarried(const std::vector<Triangle>& triangles, const Eigen::MatrixX2d& rest,
+                               Eigen::MatrixX2d& positions, const std::vector<char>& locked, const UntangleOptions& options) {
+  const std::vector<char> near = foldNeighbourhood(triangles, positions, kFoldRings);
   std::vector<char> held = locked;
   for (size_t v = 0; v < held.size(); ++v)
     if (!near[v]) held[v] = 1;

@@ -40,10 +40,14 @@ class PreviousMapStart {
   std::vector<Eigen::Vector3d> barycentric_;  // [point]: its weights there (clamped: non-negative, sum 1)
 };
 
+// The vertices (n flags, 1 = in) within `rings` rings of triangles of a triangle with no
+// positive area at `positions` (n x 2).
+std::vector<char> foldNeighbourhood(const std::vector<Triangle>& triangles, const Eigen::MatrixX2d& positions, int rings);
+
 // Untangles a map carried from the previous one (positions, n x 2, updated in place; `locked` as
-// untangle() takes it): the vertices within kFoldRings rings of triangles of a folded triangle
-// first, the rest held (the carried map is good there, and a few free vertices converge in a few
-// iterations); when that leaves a fold, every vertex not locked.
+// untangle() takes it): foldNeighbourhood(kFoldRings) first, the rest held (the carried map is
+// good there, and a few free vertices converge in a few iterations); when that leaves a fold,
+// every vertex not locked.
 UntangleResult untangleCarried(const std::vector<Triangle>& triangles, const Eigen::MatrixX2d& rest,
                                Eigen::MatrixX2d& positions, const std::vector<char>& locked, const UntangleOptions& options);
 constexpr int kFoldRings = 4;
