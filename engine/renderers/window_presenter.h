@@ -76,10 +76,6 @@ class WindowPresenter {
   // Draws the prepared mesh from the next frame on; false (nothing changes) when none is prepared.
   // The frames in flight finish with the old one, which is released once they have (no wait here).
   bool usePreparedMesh();
-  void setMesh(const RenderMesh& mesh) {  // both at once
-    prepareMesh(mesh);
-    usePreparedMesh();
-  }
   void setBackdrop(const Backdrop& backdrop);
   const Backdrop& backdrop() const { return backdrop_; }
 
