@@ -1,5 +1,6 @@
 #include "play_fixtures.h"
 
+#include "editor/editor_view.h"
 #include "player/player_ui.h"
 #include "player/view_navigation.h"
 
@@ -183,6 +184,22 @@ std::string LiveWindow::withId(std::string args) const {
   for (size_t at = args.find("--window"); at != std::string::npos; at = args.find("--window", at + 1))
     args.insert(at + 8, " " + id);
   return args;
+}
+
+std::string at(ib::editor::EditorView& view, int key, double x, double y, int dx, int dy) {
+  const Eigen::Vector2d p = view.toScreen(key, {x, y});
+  return "mousemove --window " + std::to_string(static_cast<int>(std::lround(p.x())) + dx) + " " +
+         std::to_string(static_cast<int>(std::lround(p.y())) + dy);
+}
+
+void clickControl(LiveWindow& live, ib::editor::EditorView& view, const std::string& name) {
+  const std::optional<Eigen::Vector2d> c = view.buttonCentre(name);
+  INFO(name);
+  REQUIRE(c);
+  live.send("mousemove --window " + std::to_string(static_cast<int>(c->x())) + " " + std::to_string(static_cast<int>(c->y())));
+  live.frames(3);
+  live.send("click 1");
+  live.frames(3);
 }
 
 }  // namespace playtest

@@ -16,6 +16,7 @@
 
 namespace ib::editor {
 class EditorSession;
+class EditorView;
 }  // namespace ib::editor
 
 namespace playtest {
@@ -89,5 +90,12 @@ struct LiveWindow {
  private:
   std::string withId(std::string args) const;
 };
+
+// "mousemove --window X Y" at the editor's key k's drawing point (x, y), offset by (dx, dy) window pixels.
+std::string at(ib::editor::EditorView& view, int key, double x, double y, int dx = 0, int dy = 0);
+
+// Clicks the Edit tab's control `name` (EditorView::buttonCentre) with the real pointer: moved
+// there, a few frames hovering, then pressed and released, as a hand does.
+void clickControl(LiveWindow& live, ib::editor::EditorView& view, const std::string& name);
 
 }  // namespace playtest

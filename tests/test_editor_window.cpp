@@ -39,13 +39,6 @@ fs::path newScene(const std::string& name) {
   return scene;
 }
 
-// "mousemove --window X Y" at key k's drawing point (x, y), offset by (dx, dy) window pixels.
-std::string at(editor::EditorView& view, int key, double x, double y, int dx = 0, int dy = 0) {
-  const Eigen::Vector2d p = view.toScreen(key, {x, y});
-  return "mousemove --window " + std::to_string(static_cast<int>(std::lround(p.x())) + dx) + " " +
-         std::to_string(static_cast<int>(std::lround(p.y())) + dy);
-}
-
 // Draws a two-point cut in key k with real input: the Cut tool (C), a click at each end, Enter.
 void drawCut(LiveWindow& live, editor::EditorView& view, int key, const Eigen::Vector2d& from, const Eigen::Vector2d& to) {
   live.send("key c");
@@ -66,6 +59,16 @@ void dragInterior(LiveWindow& live, editor::EditorView& view, int key, double x,
   live.frames(3);
   live.send("mouseup 1");
   live.frames(3);
+}
+
+// Renames through the Edit tab as a user does: a click in the field, Ctrl+A, the new name typed
+// on the keyboard, a click on the field's button.
+void renameThroughPanel(LiveWindow& live, editor::EditorView& view, const std::string& field, const std::string& button,
+                        const std::string& to) {
+  clickControl(live, view, field);
+  live.sendWhilePresenting("key ctrl+a");
+  live.sendWhilePresenting("type --delay 40 " + to);  // frames between the keys: ImGui takes a key a frame
+  clickControl(live, view, button);
 }
 
 // Pixels of window rows [y0, y1) and columns [x0, x1) within 40/255 of an RGB colour.
@@ -163,11 +166,7 @@ TEST_CASE("editor window: features clicked onto two keys' outlines, dragged, a c
   CHECK(editing.marks().keys[1].interior.at("detail1").x() == Approx(40).margin(1.0));  // the point stays
   // The Edit tab's Undo and Redo buttons, clicked.
   for (const char* button : {"Undo", "Redo"}) {
-    const std::optional<Eigen::Vector2d> c = view.buttonCentre(button);
-    REQUIRE(c);
-    live.send("mousemove --window " + std::to_string(std::lround(c->x())) + " " + std::to_string(std::lround(c->y())) +
-              " click 1");
-    live.frames(3);
+    clickControl(live, view, button);
     CHECK(editing.marks().keys[1].radii.at("detail1") == Approx(std::string(button) == "Undo" ? 6 : 9).margin(1.0));
   }
 
@@ -314,12 +313,21 @@ TEST_CASE("editor window: the README's chomp made from its two drawings with cli
   live.send(at(view, 1, 129, 30) + " click 1");
   live.frames(3);
   REQUIRE_FALSE(editing.document().problem());
-  editing.apply(edit::RenameFeature{"f1", "top"});  // the panel's Rename (typing a name is not a coordinate)
+  // Renamed in the Edit tab, typed: the letters of the tools' shortcuts (q, d, b, c) go into the
+  // field, not to the tools.
+  renameThroughPanel(live, view, "name", "Rename", "topqdbc");
+  CHECK(view.tools().tool == editor::Tool::kFeature);
+  REQUIRE(editing.marks().keys[1].features.count("topqdbc"));
+  renameThroughPanel(live, view, "name", "Rename", "top");
+  REQUIRE(editing.marks().keys[0].features.count("top"));
+  REQUIRE(editing.marks().keys[1].features.count("top"));
   // The mouth: a notch from the right edge to the centre in the closed key, then its three
   // features in the open key as the editor asks for them: the lower lip, the upper lip, the tip.
   drawCut(live, view, 0, {229, 128}, {128, 128});
   REQUIRE(editing.marks().keys[0].cuts.size() == 1);
-  editing.apply(edit::RenameCut{"cut1", "mouth"});
+  renameThroughPanel(live, view, "cut 0", "cut 0 rename", "mouth");
+  REQUIRE(editing.marks().keys[0].cuts.size() == 1);
+  CHECK(editing.marks().keys[0].cuts[0].name == "mouth");
   live.send("key q");
   live.frames(2);
   live.send(at(view, 1, 128, 128) + " mousemove_relative 0 0");  // the prompt is shown in the key's title
@@ -338,7 +346,7 @@ TEST_CASE("editor window: the README's chomp made from its two drawings with cli
   live.send("key d");
   live.frames(2);
   for (int k = 0; k < 2; ++k) dragInterior(live, view, k, 140, 70, 9);
-  editing.apply(edit::RenameInteriorFeature{"detail1", "eye"});
+  renameThroughPanel(live, view, "name", "Rename", "eye");
   REQUIRE(editing.marks().keys[1].interior.count("eye"));
   live.send("key q mousemove --window 600 650");
   REQUIRE(presentUntil(*live.window, [&] { return !live.session.reloader().busy() && !view.awaitingFrame(); }, 120));

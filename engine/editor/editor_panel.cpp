@@ -13,6 +13,7 @@ namespace ib::editor {
 
 namespace {
 
+constexpr float kStateLines = 5;  // the height of the Edit tab's state box, in lines of text
 const char* const kToolNames[] = {"Features", "Cut", "Interior", "Stiffness"};
 const char* const kToolKeys[] = {"Q", "C", "D", "B"};
 const char* const kToolHelp[] = {
@@ -45,7 +46,15 @@ void EditorView::panel() {
   }
 
   ImGui::Separator();
-  // What to do next, and what is wrong, in words.
+  // What to do next, and what is wrong, in words, in a box of fixed height: the controls below
+  // stay where they are while rebuilds start and end and messages come and go under the pointer.
+  ImGui::BeginChild("##state", ImVec2(0, ImGui::GetTextLineHeightWithSpacing() * kStateLines), false);
+  if (player_.reloader().busy())
+    ImGui::Text("rebuilding: %s (%.0f%%)", player_.reloader().stage().c_str(), 100 * player_.reloader().progress());
+  else if (latencyMs_ >= 0)
+    ImGui::TextDisabled("last edit to new frame: %.0f ms", latencyMs_);
+  else
+    ImGui::TextDisabled("built");
   if (const std::optional<MissingFeature> next = session_.nextMissing(lastEditedKey_)) {
     ImGui::TextColored(ImVec4(1, 0.82f, 0, 1), "place `%s` in key `%s`%s", next->feature.c_str(), next->key.c_str(),
                        next->interior ? " (Interior tool)" : "");
@@ -56,14 +65,17 @@ void EditorView::panel() {
     if (all.size() > 7) rest += ", ...";
     if (!rest.empty()) ImGui::TextDisabled("%s", rest.c_str());
   }
-  if (!session_.orderProblem().empty()) ImGui::TextColored(ImVec4(1, 0.35f, 0.35f, 1), "%s", session_.orderProblem().c_str());
-  else if (doc.problem() && !session_.nextMissing(lastEditedKey_)) ImGui::TextColored(ImVec4(1, 0.35f, 0.35f, 1), "%s", doc.problem()->c_str());
-  if (!buildError_.empty()) ImGui::TextColored(ImVec4(1, 0.35f, 0.35f, 1), "build: %s", buildError_.c_str());
-  if (!status_.empty()) ImGui::TextColored(statusError_ ? ImVec4(1, 0.35f, 0.35f, 1) : ImVec4(0.6f, 1, 0.6f, 1), "%s", status_.c_str());
-  if (player_.reloader().busy())
-    ImGui::Text("rebuilding: %s (%.0f%%)", player_.reloader().stage().c_str(), 100 * player_.reloader().progress());
-  else if (latencyMs_ >= 0)
-    ImGui::TextDisabled("last edit to new frame: %.0f ms", latencyMs_);
+  const auto wrapped = [](const ImVec4& colour, const std::string& text) {
+    ImGui::PushStyleColor(ImGuiCol_Text, colour);
+    ImGui::TextWrapped("%s", text.c_str());
+    ImGui::PopStyleColor();
+  };
+  const ImVec4 red(1, 0.35f, 0.35f, 1);
+  if (!session_.orderProblem().empty()) wrapped(red, session_.orderProblem());
+  else if (doc.problem() && !session_.nextMissing(lastEditedKey_)) wrapped(red, *doc.problem());
+  if (!buildError_.empty()) wrapped(red, "build: " + buildError_);
+  if (!status_.empty()) wrapped(statusError_ ? red : ImVec4(0.6f, 1, 0.6f, 1), status_);
+  ImGui::EndChild();
 
   // The selection.
   if (selectedKey_ >= 0 && selectedKey_ < session_.keyCount() && !selected_.empty()) {
@@ -71,8 +83,11 @@ void EditorView::panel() {
     const std::string key = session_.marks().keys[static_cast<size_t>(selectedKey_)].name;
     ImGui::Text("%s `%s` in key `%s`", selectedInterior_ ? "interior feature" : "feature", selected_.c_str(), key.c_str());
     ImGui::InputText("##name", renameBuffer_.data(), renameBuffer_.size());
+    drawnAt("name");
     ImGui::SameLine();
-    if (ImGui::Button("Rename") && renameBuffer_[0] != '\0' && selected_ != renameBuffer_.data()) {
+    const bool rename = ImGui::Button("Rename");
+    drawnAt("Rename");
+    if (rename && renameBuffer_[0] != '\0' && selected_ != renameBuffer_.data()) {
       const std::string to = renameBuffer_.data();
       if (selectedInterior_) run(edit::RenameInteriorFeature{selected_, to});
       else run(edit::RenameFeature{selected_, to});
@@ -99,11 +114,6 @@ void EditorView::panel() {
   // Whether each can act, read once: the click changes it before the disabled scope ends.
   const bool canUndo = doc.canUndo(), canRedo = doc.canRedo();
   const std::string undoLabel = doc.undoLabel(), redoLabel = doc.redoLabel();
-  // Where each button was drawn, for tests that click it (buttonCentre).
-  const auto drawnAt = [this](const char* name) {
-    const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
-    buttons_[name] = {lo.x, lo.y, hi.x, hi.y};
-  };
   ImGui::BeginDisabled(!canUndo);
   if (ImGui::Button("Undo")) shortcut(90, true, false);
   drawnAt("Undo");
@@ -168,10 +178,13 @@ void EditorView::cutsPanel() {
     }
     ImGui::SetNextItemWidth(120);
     ImGui::InputText("##cut", buffer.data(), buffer.size());
+    drawnAt("cut " + std::to_string(i));
     ImGui::SameLine();
     ImGui::TextDisabled("%s", cuts[i].second.c_str());
     ImGui::SameLine(200);
-    if (ImGui::SmallButton("rename") && cuts[i].first != buffer.data()) run(edit::RenameCut{cuts[i].first, buffer.data()});
+    const bool rename = ImGui::SmallButton("rename");
+    drawnAt("cut " + std::to_string(i) + " rename");
+    if (rename && cuts[i].first != buffer.data()) run(edit::RenameCut{cuts[i].first, buffer.data()});
     ImGui::SameLine();
     if (ImGui::SmallButton("remove")) {
       run(edit::RemoveCut{cuts[i].first, ""});
@@ -193,7 +206,11 @@ void EditorView::keysPanel() {
     if (ImGui::RadioButton("##reference", name == marks.reference) && name != marks.reference) run(edit::SetReference{name});
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("the reference key: its drawing is triangulated, stiffness is painted on it");
     ImGui::SameLine();
-    if (ImGui::Selectable((std::to_string(k) + "  " + name).c_str(), selectedKey_ == k, 0, ImVec2(140, 0))) selectedKey_ = k;
+    if (ImGui::Selectable((std::to_string(k) + "  " + name).c_str(), selectedKey_ == k, 0, ImVec2(140, 0))) {
+      selectedKey_ = k;
+      focus(k);
+    }
+    drawnAt("key " + std::to_string(k));
     ImGui::SameLine(200);
     const bool first = k == 0, last = k + 1 == session_.keyCount();  // read once: a move changes them
     ImGui::BeginDisabled(first);
@@ -280,6 +297,11 @@ bool EditorView::closeDialog() {
     ImGui::EndPopup();
   }
   return close;
+}
+
+void EditorView::drawnAt(const std::string& control) {
+  const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
+  buttons_[control] = {lo.x, lo.y, hi.x, hi.y};
 }
 
 }  // namespace ib::editor

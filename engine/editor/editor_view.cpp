@@ -15,12 +15,16 @@ namespace {
 
 constexpr double kPreviewShare = 0.36;   // of the canvas's height: the animation below the keys
 constexpr double kIdleBeforeOptimizing = 1.5;  // s without an edit before the Comesh-optimized rebuild
+constexpr double kMinViewWidth = 200;    // window px: narrower key views side by side give way to one large view and thumbnails
+constexpr double kFocusShare = 0.5;      // of the canvas's width: the large view's, with thumbnails
 
 }  // namespace
 
 EditorView::EditorView(EditorSession& session, play::PlayerSession& player) : session_(session), player_(player) {
   loadDrawings();
   sentGeneration_ = session_.generation();  // the player built the scene as opened
+  for (int k = 0; k < session_.keyCount(); ++k)
+    if (session_.marks().keys[static_cast<size_t>(k)].name == session_.marks().reference) focusKey_ = k;
   // The live parameters go into the document (one undoable edit), and the document into the
   // file: the file never gets ahead of the document, which a later save would write back.
   player_.setParameterSaver([this](play::LiveParameters& parameters, double fps) {
@@ -62,10 +66,43 @@ void EditorView::layout(const play::PixelRect& canvas, int width, int height) {
   height_ = height;
   const double split = canvas.y1 - (canvas.y1 - canvas.y0) * kPreviewShare;
   preview_ = {canvas.x0, split, canvas.x1, canvas.y1};
-  const int m = std::max<int>(1, static_cast<int>(views_.size()));
-  const double w = (canvas.x1 - canvas.x0) / m;
-  for (int k = 0; k < static_cast<int>(views_.size()); ++k)
-    views_[static_cast<size_t>(k)].rect = {canvas.x0 + k * w + 2, canvas.y0 + 2, canvas.x0 + (k + 1) * w - 2, split - 4};
+  const int m = static_cast<int>(views_.size());
+  const double across = canvas.x1 - canvas.x0, down = split - canvas.y0;
+  const auto place = [&](int k, double x0, double y0, double x1, double y1, bool thumbnail) {
+    KeyView& v = views_[static_cast<size_t>(k)];
+    v.rect = {x0 + 2, y0 + 2, x1 - 2, y1 - 2};
+    v.thumbnail = thumbnail;
+  };
+  if (m * kMinViewWidth <= across) {  // side by side
+    for (int k = 0; k < m; ++k) place(k, canvas.x0 + k * across / m, canvas.y0, canvas.x0 + (k + 1) * across / m, split - 2, false);
+    return;
+  }
+  // One key large on the left; the others as thumbnails in a grid on the right, its columns
+  // chosen for the largest cells (the drawings' shape unknown: their smaller side counts).
+  focusKey_ = std::clamp(focusKey_, 0, m - 1);
+  const double focusWidth = std::max(kMinViewWidth, across * kFocusShare);
+  place(focusKey_, canvas.x0, canvas.y0, canvas.x0 + focusWidth, split - 2, false);
+  const int n = m - 1;
+  const double gridWidth = across - focusWidth;
+  int columns = 1;
+  const auto cell = [&](int c) { return std::min(gridWidth / c, down / ((n + c - 1) / c)); };
+  for (int c = 2; c <= n; ++c)
+    if (cell(c) > cell(columns)) columns = c;
+  const double cellWidth = gridWidth / columns, cellHeight = down / ((n + columns - 1) / columns);
+  for (int k = 0, i = 0; k < m; ++k) {
+    if (k == focusKey_) continue;
+    const double x0 = canvas.x0 + focusWidth + (i % columns) * cellWidth, y0 = canvas.y0 + (i / columns) * cellHeight;
+    place(k, x0, y0, x0 + cellWidth, y0 + cellHeight, true);
+    ++i;
+  }
+}
+
+bool EditorView::thumbnailLayout() const {
+  return std::any_of(views_.begin(), views_.end(), [](const KeyView& v) { return v.thumbnail; });
+}
+
+void EditorView::focus(int key) {
+  if (key >= 0 && key < static_cast<int>(views_.size())) focusKey_ = key;
 }
 
 render::ViewBox EditorView::windowViewOf(int key) const {
@@ -167,6 +204,10 @@ bool EditorView::input() {
   if (paintKey_ >= 0 && ImGui::IsMouseDown(ImGuiMouseButton_Left)) key = paintKey_;
   if (key < 0 || key >= static_cast<int>(views_.size())) return false;
   KeyView& view = views_[static_cast<size_t>(key)];
+  if (view.thumbnail) {  // a thumbnail is a button: it shows its key large, and takes no edits
+    if (ImGui::IsMouseClicked(ImGuiMouseButton_Left)) focus(key);
+    return true;
+  }
   const RgbaImage& d = drawings_[static_cast<size_t>(key)];
   const render::ViewBox content{0, 0, double(d.width), double(d.height)};
   hover_ = toDrawing(key, io.MousePos.x, io.MousePos.y);

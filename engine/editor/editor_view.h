@@ -1,5 +1,6 @@
 // The editor in the player's window (`inbetween edit SCENE`, `inbetween new ...`): the keys side
-// by side over the upper part of the canvas, each with its traced outline, its arcs coloured by
+// by side over the upper part of the canvas (more than fit: one large, the others as thumbnails
+// a click shows large), each with its traced outline, its arcs coloured by
 // the features they join, features with their names, cuts, interior features and painted
 // stiffness, each view zoomed and panned on its own; the animation plays below, rebuilt in the
 // background after every edit. Tools: features (click on the outline; drag along it), cuts
@@ -97,9 +98,16 @@ class EditorView {
   void moveCut(const std::string& cut, int frame);
   int selectedMark() const { return selectedMark_; }
 
+  // With more keys than fit side by side (views under 200 px wide), one key is shown large and the
+  // others as thumbnails; a click on a thumbnail, or choosing the key in the Edit tab, shows it large.
+  void focus(int key);
+  int focusKey() const { return focusKey_; }
+  bool thumbnailLayout() const;
   // Window pixel of key k's drawing point p, and the key's view (tests aim their clicks with it).
   Eigen::Vector2d toScreen(int key, const Eigen::Vector2d& p) const;
-  // Window pixel of the centre of the Edit tab's "Undo" or "Redo" button as last drawn; none before.
+  // Window pixel of the centre of an Edit tab's control as last drawn (none before): the "Undo",
+  // "Redo" and "Rename" buttons, the selection's "name" field, cut i's field "cut i" and its
+  // button "cut i rename", key k's entry in the key list "key k".
   std::optional<Eigen::Vector2d> buttonCentre(const std::string& name) const {
     const auto it = buttons_.find(name);
     if (it == buttons_.end()) return std::nullopt;
@@ -110,6 +118,7 @@ class EditorView {
   struct KeyView {
     play::PixelRect rect;
     play::ViewNavigation navigation;
+    bool thumbnail = false;  // a small view: a click makes it the large one
   };
   render::ViewBox windowViewOf(int key) const;
   Eigen::Vector2d toDrawing(int key, double x, double y) const;
@@ -129,6 +138,7 @@ class EditorView {
   void suggestionsPanel();
   void cutsPanel();
   void accept(size_t suggestion);
+  void drawnAt(const std::string& control);  // records the last ImGui item's rectangle for buttonCentre
 
   EditorSession& session_;
   play::PlayerSession& player_;
@@ -136,6 +146,7 @@ class EditorView {
   std::vector<KeyView> views_;
   play::PixelRect canvas_, preview_;
   int width_ = 1, height_ = 1;
+  int focusKey_ = 0;  // the key shown large when there are thumbnails
   std::vector<RgbaImage> drawings_;
   std::vector<std::string> drawingFiles_;
   int drawingsGeneration_ = 0;
