@@ -51,7 +51,7 @@ TEST_CASE("editor window: with 16 keys one is shown large and the others as thum
   const double large = shownWidth(view, 0, 512);
   CHECK(large > 300);
   for (int k = 1; k < 16; ++k) CHECK(shownWidth(view, k, 512) < large / 3);
-  shot("thumbnails");
+  shot("thumbnails-start");
 
   // A click in k05's thumbnail shows it large, and places nothing.
   const size_t features = editing.marks().keys[5].features.size();
@@ -82,7 +82,7 @@ TEST_CASE("editor window: with 16 keys one is shown large and the others as thum
   CHECK((editing.marks().keys[5].features.at(added) - target).norm() < 1.0);
   REQUIRE(editing.nextMissing(5));
   CHECK(editing.nextMissing(5)->feature == added);
-  shot("thumbnail-focused");
+  shot("thumbnails");
 
   // The key list in the Edit tab chooses the large key; Ctrl+Z takes the feature back.
   clickControl(live, view, "key 9");
