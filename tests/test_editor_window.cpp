@@ -61,13 +61,13 @@ void dragInterior(LiveWindow& live, editor::EditorView& view, int key, double x,
   live.frames(3);
 }
 
-// Renames through the Edit tab as a user does: a click in the field, Ctrl+A, the new name typed
-// on the keyboard, a click on the field's button.
+// Renames through the Edit tab as a user does: a click in the field (which selects its text), the
+// new name typed on the keyboard, a click on the field's button.
 void renameThroughPanel(LiveWindow& live, editor::EditorView& view, const std::string& field, const std::string& button,
                         const std::string& to) {
   clickControl(live, view, field);
-  live.sendWhilePresenting("key ctrl+a");
   live.sendWhilePresenting("type --delay 40 " + to);  // frames between the keys: ImGui takes a key a frame
+  live.frames(static_cast<int>(to.size()));           // and the keys a slow frame left queued
   clickControl(live, view, button);
 }
 

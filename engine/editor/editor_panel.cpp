@@ -82,7 +82,8 @@ void EditorView::panel() {
     ImGui::Separator();
     const std::string key = session_.marks().keys[static_cast<size_t>(selectedKey_)].name;
     ImGui::Text("%s `%s` in key `%s`", selectedInterior_ ? "interior feature" : "feature", selected_.c_str(), key.c_str());
-    ImGui::InputText("##name", renameBuffer_.data(), renameBuffer_.size());
+    // A click in a name's field selects it: typing replaces it.
+    ImGui::InputText("##name", renameBuffer_.data(), renameBuffer_.size(), ImGuiInputTextFlags_AutoSelectAll);
     drawnAt("name");
     ImGui::SameLine();
     const bool rename = ImGui::Button("Rename");
@@ -177,7 +178,7 @@ void EditorView::cutsPanel() {
       std::snprintf(buffer.data(), buffer.size(), "%s", filledFrom.c_str());
     }
     ImGui::SetNextItemWidth(120);
-    ImGui::InputText("##cut", buffer.data(), buffer.size());
+    ImGui::InputText("##cut", buffer.data(), buffer.size(), ImGuiInputTextFlags_AutoSelectAll);
     drawnAt("cut " + std::to_string(i));
     ImGui::SameLine();
     ImGui::TextDisabled("%s", cuts[i].second.c_str());
