@@ -104,7 +104,7 @@ namespace {
 std::vector<Benchmark> benchmarks() {
   return {interpBenchmark(), comeshBenchmark(), animBenchmark(), meshBenchmark(),
 #ifdef INBETWEEN_WITH_ENGINE
-          renderBenchmark(), playBenchmark(), editBenchmark(),
+          renderBenchmark(), playBenchmark(), editBenchmark(), ghostBenchmark(),
 #endif
           cutBenchmark(), popsBenchmark(), shapeBenchmark(), examplesBenchmark()};
 }

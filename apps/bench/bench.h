@@ -45,6 +45,7 @@ Benchmark meshBenchmark();
 Benchmark renderBenchmark();
 Benchmark playBenchmark();
 Benchmark editBenchmark();
+Benchmark ghostBenchmark();
 #endif
 Benchmark cutBenchmark();
 Benchmark popsBenchmark();

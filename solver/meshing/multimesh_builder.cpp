@@ -5,6 +5,7 @@
 #include "core/error.h"
 #include "core/plane_geometry.h"
 #include "core/png_image.h"
+#include "meshing/artwork_agreement.h"
 #include "meshing/mesh_size.h"
 #include "meshing/shared_boundary.h"
 #include "meshing/stiffness_paint.h"
@@ -71,9 +72,13 @@ std::vector<Eigen::Vector2d> interiorPoints(const Scene& scene, int k, double ed
 // vertices of mesh.interior at interiorPoints, then every other vertex inside the disc of a feature
 // with a radius, at the same offset from the feature as in the reference key (the mesher's and the
 // split's points there too, so that the whole disc is a translated copy in every key).
+// Vertices placed in every key before the rest is mapped: the interior features (and their
+// discs), then, with "correspondence": "artwork", the artwork's anchors (anchorArtwork), placed
+// only in the initial map (Comesh moves them like any other vertex).
 struct InteriorPins {
   std::vector<int> vertices;
   std::vector<std::vector<Eigen::Vector2d>> targets;  // [key][pin]
+  size_t features = 0;  // the first `features` pins are interior features: Comesh keeps them
 };
 
 InteriorPins interiorPins(const Scene& scene, const ReferenceMesh& mesh, double edgeLength) {
@@ -93,7 +98,22 @@ InteriorPins interiorPins(const Scene& scene, const ReferenceMesh& mesh, double 
         pins.targets[k].push_back(scene.keys[k].interiorFeatures.at(name) + (mesh.points[v] - centre));
     }
   }
+  pins.features = pins.vertices.size();
   return pins;
+}
+
+// The artwork's anchors (meshing/artwork_agreement.h: artworkAnchors), each held where the
+// reference key has it, in every key: what did not change in the drawings does not move.
+void anchorArtwork(const Scene& scene, const ReferenceMesh& mesh, double edgeLength, TraceCache* traces, InteriorPins& pins) {
+  std::vector<RgbaImage> drawings;
+  for (const KeySpec& key : scene.keys) drawings.push_back(traces ? traces->drawing(key.drawing) : readPng(key.drawing));
+  std::vector<char> onBoundary(mesh.points.size(), 0), taken(mesh.points.size(), 0);
+  for (size_t v = 0; v < mesh.points.size(); ++v) onBoundary[v] = mesh.tags[v].arc >= 0;
+  for (int v : pins.vertices) taken[v] = 1;
+  for (int v : artworkAnchors(drawings, edgeLength, mesh.points, mesh.triangles, onBoundary, taken)) {
+    pins.vertices.push_back(v);
+    for (auto& targets : pins.targets) targets.push_back(mesh.points[v]);
+  }
 }
 
 // Cohesive pairs of key k: the edges of each closed cut's two sides, collocated in key k.
@@ -155,7 +175,7 @@ ComeshBoundary comeshBoundary(const SharedBoundary& boundary, const ReferenceMes
   };
   out.arcLength = [shared](int key, int arc) { return shared->arcLength(key, arc); };
   out.pinned.assign(n, 0);
-  for (int v : pins.vertices) out.pinned[v] = 1;
+  for (size_t p = 0; p < pins.features; ++p) out.pinned[pins.vertices[p]] = 1;
   out.heldIn.assign(keys, std::vector<char>(n, 0));
   for (size_t v = 0; v < n; ++v) {
     const int arc = mesh.tags[v].arc, knot = arc >= 0 ? boundary.knotAt(arc, mesh.tags[v].u) : -1;
@@ -331,10 +351,14 @@ BuiltScene buildMultimesh(const Scene& scene, const MultimeshBuildOptions& optio
   // before any meshing (meshing/mesh_size.h).
   double edgeLength = meshEdgeLength(scene, built.outlines);
   for (int k = 0; k < m; ++k) checkInteriorFeatures(scene, k, built.outlines[k], built.shapes[k], edgeLength);
+  // With "correspondence": "artwork", a key that folds is tried again by arc length at the same
+  // edge length before the edge length is refined (BuiltScene::fallback says so).
+  OutlineCorrespondence correspondence = scene.correspondence;
   for (int attempt = 0;; ++attempt) {
     SharedBoundaryOptions bo;
     bo.edgeLength = edgeLength;
     bo.corners = scene.corners;
+    bo.correspondence = correspondence;
     const SharedBoundary boundary = matchBoundaries(scene, built.shapes, bo);
     if (options.progress)
       options.progress("meshing " + scene.keys[scene.reference].name + " (" +
@@ -347,7 +371,8 @@ BuiltScene buildMultimesh(const Scene& scene, const MultimeshBuildOptions& optio
     } catch (const InputError& e) {
       throw InputError(file + ": key " + inQuotes(scene.keys[scene.reference].name) + ": cannot mesh: " + e.what());
     }
-    const InteriorPins pins = interiorPins(scene, mesh, edgeLength);
+    InteriorPins pins = interiorPins(scene, mesh, edgeLength);
+    if (correspondence == OutlineCorrespondence::kArtwork) anchorArtwork(scene, mesh, edgeLength, options.traceCache, pins);
     Attempt result = mapKeys(scene, boundary, mesh, pins, edgeLength, options);
     if (result.multimesh) {
       built.multimesh = std::move(result.multimesh);
@@ -357,6 +382,14 @@ BuiltScene buildMultimesh(const Scene& scene, const MultimeshBuildOptions& optio
       built.attempts = attempt + 1;
       built.multimesh->validate();
       return built;
+    }
+    if (correspondence == OutlineCorrespondence::kArtwork) {
+      built.fallback = "correspondence \"artwork\" folded key " + inQuotes(scene.keys[result.failedKey].name) + " near " +
+                       formatPoint(result.failedAt) + " at edge length " + formatLength(edgeLength) +
+                       " px; built with \"outline\" (arc length) instead";
+      correspondence = OutlineCorrespondence::kOutline;
+      --attempt;  // the same edge length, by arc length
+      continue;
     }
     const bool finerFits = withinMeshLimit(scene, built.outlines[scene.reference], edgeLength / 1.5);
     if (attempt >= options.refinements || !finerFits)

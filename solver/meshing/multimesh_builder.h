@@ -58,6 +58,9 @@ struct BuiltScene {
   int attempts = 0;                            // meshing attempts made (1 = no refinement needed)
   // Each failed attempt before the one that worked, e.g. `at 6 px, key "full" folded near (312.0, 140.0)`.
   std::vector<std::string> failedAttempts;
+  // When the scene's "correspondence" could not be mapped and another was used: what failed and
+  // what was used instead; empty otherwise.
+  std::string fallback;
 };
 
 // Throws InputError naming the file, key and place for bad drawings, features, cuts, loops that do

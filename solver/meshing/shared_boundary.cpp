@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 #include "meshing/boundary_sampling.h"
+#include "meshing/outline_matching.h"
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -143,6 +144,7 @@ class Matcher {
     for (size_t k = 0; k < shapes_.size(); ++k) matchKey(static_cast<int>(k));
     pairCutSides();
     placeCornerKnots(out_, ref_, options_);
+    if (options_.correspondence == OutlineCorrespondence::kArtwork) placeShapeKnots(out_, ref_, options_);
     placeCurveKnots(out_, options_);
     countSegments(out_, ref_, options_.edgeLength);
     return std::move(out_);

@@ -50,6 +50,9 @@ struct SharedBoundaryOptions {
   // consecutive boundary vertices): arcs get more segments where they curve. Default 0.3, so
   // that each key's silhouette follows its drawing within half a pixel.
   double chordTolerance = 0.3;
+  // Between features and paired corners: arc length (the paper), or the outlines matched by shape
+  // (outline_matching.h). Default outline.
+  OutlineCorrespondence correspondence = OutlineCorrespondence::kOutline;
 };
 
 struct SharedBoundary {

@@ -149,6 +149,7 @@ SceneMultimesh build(const Scene& scene, const SceneMultimeshOptions& options, M
   out.edgeLength = built.edgeLength;
   out.initial = std::make_shared<const Multimesh>(std::move(*built.multimesh));
   out.multimesh = out.initial;
+  if (!built.fallback.empty()) out.notes.push_back(fs::path(scene.file).filename().string() + ": " + built.fallback);
   if (!built.failedAttempts.empty()) out.notes.push_back(refinementNote(scene.file, built.edgeLength, built.failedAttempts));
   if (!options.comesh) return out;
 

@@ -32,4 +32,10 @@ enum class CornerHandling {
   kOff,       // "off": arc length between features only, as in the paper
 };
 
+// How the keys' outlines are matched between features and corners; "correspondence" in the scene.
+enum class OutlineCorrespondence {
+  kOutline,  // "outline": by arc length, as in the paper
+  kArtwork,  // "artwork": by position and tangent (meshing/outline_matching.h), the inside anchored where the drawings agree
+};
+
 }  // namespace ib

@@ -87,6 +87,12 @@ std::vector<ParameterSpec> makeTable() {
           .meaning("what the outlines' corners do to the correspondence").invalidates(I::kMultimesh)
           .access([](const Scene& s) { return double(s.corners); },
                   [](Scene& s, double v) { s.corners = static_cast<CornerHandling>(v); }));
+  add(Row("correspondence", "correspondence")
+          .choice(int(scene.correspondence), {{"outline", "arc length between features and corners, as in the paper"},
+                                              {"artwork", "the outlines matched by position and tangent, and what is the same in every drawing stays still"}})
+          .meaning("how the keys' outlines correspond between features").invalidates(I::kMultimesh)
+          .access([](const Scene& s) { return double(s.correspondence); },
+                  [](Scene& s, double v) { s.correspondence = static_cast<OutlineCorrespondence>(v); }));
   add(Row("tolerance", "tracing.tolerance").number(tracing.tolerance, 0, 10).openMin().unit("px")
           .meaning("potrace's curve tolerance and the flattening error of its curves").invalidates(I::kMultimesh)
           .access([](const Scene& s) { return s.tracing.tolerance; }, [](Scene& s, double v) { s.tracing.tolerance = v; }));

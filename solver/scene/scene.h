@@ -87,6 +87,8 @@ struct Scene {
   // "corners": how the shared boundary treats the outlines' corners (meshing/outline_corners.h).
   // Default vertices.
   CornerHandling corners = CornerHandling::kVertices;
+  // "correspondence": how the keys correspond between features and corners. Default outline.
+  OutlineCorrespondence correspondence = OutlineCorrespondence::kOutline;
   ArtworkSampling sampling = ArtworkSampling::kAuto;  // "sampling": how front ends filter the drawings
   bool cutInk = true;  // "cut_ink": render, play and export draw an opening cut's edges with the drawings' outline ink
   TracingOptions tracing;
