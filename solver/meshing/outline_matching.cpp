@@ -31,7 +31,10 @@ std::vector<double> matchByShape(const std::vector<Eigen::Vector2d>& reference, 
   const auto cost = [&](int i, int j) {
     const double d2 = (reference[i] - key[j]).squaredNorm();
     const double position = d2 / (d2 + scale2);
-    return position + options.tangentWeight * 0.5 * (1 - tr[i].dot(tk[j]));
+    // Tangents count only between points near each other: far apart (a part that moved, or keys
+    // that differ everywhere) every pairing costs about the same, and the step penalty keeps the
+    // match to arc length.
+    return position + (1 - position) * options.tangentWeight * 0.5 * (1 - tr[i].dot(tk[j]));
   };
   // D(i, j): the cheapest path from (0, 0) to (i, j); step 0 diagonal, 1 from (i - 1, j - 2)
   // through (i, j - 1), 2 from (i - 2, j - 1) through (i - 1, j).

@@ -1,7 +1,7 @@
 // Outlines matched by what they look like (../shared/correspondence.md): between two knots (the
 // features, and the corners every key has), a key's outline is matched to the reference key's by
 // dynamic programming over both sampled evenly, on position (a robust cost: far-apart points all
-// cost the same) and tangent, instead of by arc length alone. Where two keys' outlines coincide their
+// cost the same) and, between near points, tangent, instead of by arc length alone. Where two keys' outlines coincide their
 // points then correspond, and a part that moved (a tail) does not drag the rest along the outline.
 // Internal to matchBoundaries (shared_boundary.h).
 #pragma once
@@ -17,7 +17,9 @@ struct OutlineMatchOptions {
   // px: two points this far apart cost half as much as points far apart; the cost d^2 / (d^2 + scale^2)
   // is sharp near 0 and the same for every point of a part that moved. Default 2.
   double scale = 2;
-  double tangentWeight = 1;   // cost of opposite tangents, against 1 for points far apart. Default 1.
+  // Cost of opposite tangents between points at the same place, against 1 for points far apart
+  // (scaled by how near they are: d^2 / (d^2 + scale^2) less). Default 1.
+  double tangentWeight = 1;
   double stepPenalty = 0.05;  // cost of each step off arc length (a (1, 2) or (2, 1) step). Default 0.05.
   double spacing = 1;         // px: the samples' spacing along the longer arc (at most maxSamples). Default 1.
   int maxSamples = 800;       // samples per arc and key at most. Default 800.
