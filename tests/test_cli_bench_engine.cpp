@@ -1,10 +1,13 @@
 // The benchmarks that need the engine: `inbetween bench render` headless on lavapipe, and (under
-// Xvfb, "[.window]", run by ctest through xvfb-run) `inbetween bench play` in the player's window.
+// Xvfb, "[.window]", run by ctest through xvfb-run) `inbetween bench play` in the player's window;
+// `inbetween bench ghost` on scenes written here.
 // Every stdout line is one JSON object of the case, with the fields its --help documents
 // (apps/bench/bench_render.cpp, bench_play.cpp) and positive times.
 #include "cli_support.h"
 
 #include <catch2/catch.hpp>
+#include <filesystem>
+#include <fstream>
 
 using Catch::StartsWith;
 using test::CommandRun;
@@ -71,4 +74,39 @@ TEST_CASE("window: bench play prints a JSON line for the scene it plays under Xv
   CHECK(line.at("p95_ms").get<double>() >= line.at("p50_ms").get<double>());
   CHECK(line.at("latency_ms").get<double>() > 0);
   CHECK(line.at("latency_max_ms").get<double>() >= line.at("latency_ms").get<double>());
+}
+
+TEST_CASE("cli: bench ghost finds no ghost where the keys are one drawing, and one where a key's artwork moves") {
+  // Two keys, each the cat of tests/correspondence drawn with its tail down: every inbetween is
+  // that drawing, up to the renderer's resampling; then the second key's tail up, so the body
+  // agrees and the tail does not.
+  const std::filesystem::path folder = std::filesystem::temp_directory_path() / "inbetween-cli-bench-ghost";
+  std::filesystem::remove_all(folder);
+  std::filesystem::create_directories(folder / "same");
+  std::filesystem::create_directories(folder / "tail");
+  const std::filesystem::path cat = std::filesystem::path(INBETWEEN_SOURCE_DIR) / "tests" / "correspondence" / "cat-tail";
+  const auto scene = [&](const std::string& name, const std::string& second) {
+    std::filesystem::copy_file(cat / "down.png", folder / name / "a.png");
+    std::filesystem::copy_file(cat / second, folder / name / "b.png");
+    std::ofstream((folder / name / "scene.json").string()) << (R"({"version": 1, "keys": [{"name": "a", "drawing": "a.png"}, {"name": "b", "drawing": "b.png"}],
+                        "timeline": {"fps": 8, "marks": [{"time": 0, "key": "a"}, {"time": 1, "key": "b"}]}})");
+  };
+  scene("same", "down.png");
+  scene("tail", "up.png");
+  const CommandRun run = inbetween({"bench", "ghost", "--assets", folder.string()});
+  INFO(run.output);
+  REQUIRE(run.code == 0);
+  const std::vector<Json> lines = jsonLines(run.out);
+  REQUIRE(lines.size() == 2);  // by folder name: same, tail
+  const Json& same = lines[0];
+  CHECK(same.at("scene") == "same");
+  CHECK(same.at("frames") == 7);  // 9 frames, the two keys' left out
+  CHECK(same.at("drawn_pixels").get<int>() > 50000);
+  CHECK(same.at("drawn_mean").get<double>() < 1.5);  // 0.63 measured: the renderer resampling the drawing
+  CHECK(same.at("drawn_share").get<double>() < 0.02);  // 0.9%: antialiased edges
+  const Json& tail = lines[1];
+  CHECK(tail.at("drawn_pixels").get<int>() > 40000);
+  CHECK(tail.at("drawn_pixels").get<int>() < same.at("drawn_pixels").get<int>());
+  CHECK(tail.at("drawn_mean").get<double>() > 5 * same.at("drawn_mean").get<double>());  // 17.6 measured
+  std::filesystem::remove_all(folder);
 }
