@@ -104,9 +104,7 @@ InteriorPins interiorPins(const Scene& scene, const ReferenceMesh& mesh, double 
 
 // The artwork's anchors (meshing/artwork_agreement.h: artworkAnchors), each held where the
 // reference key has it, in every key: what did not change in the drawings does not move.
-void anchorArtwork(const Scene& scene, const ReferenceMesh& mesh, double edgeLength, TraceCache* traces, InteriorPins& pins) {
-  std::vector<RgbaImage> drawings;
-  for (const KeySpec& key : scene.keys) drawings.push_back(traces ? traces->drawing(key.drawing) : readPng(key.drawing));
+void anchorArtwork(const std::vector<RgbaImage>& drawings, const ReferenceMesh& mesh, double edgeLength, InteriorPins& pins) {
   std::vector<char> onBoundary(mesh.points.size(), 0), taken(mesh.points.size(), 0);
   for (size_t v = 0; v < mesh.points.size(); ++v) onBoundary[v] = mesh.tags[v].arc >= 0;
   for (int v : pins.vertices) taken[v] = 1;
@@ -327,6 +325,9 @@ Attempt mapKeys(const Scene& scene, const SharedBoundary& boundary, const Refere
 BuiltScene buildMultimesh(const Scene& scene, const MultimeshBuildOptions& options) {
   BuiltScene built;
   const int m = static_cast<int>(scene.keys.size());
+  // The drawings as read, kept for the artwork's anchors: read once, for tracing, and used by every attempt.
+  const bool artwork = scene.correspondence == OutlineCorrespondence::kArtwork;
+  std::vector<RgbaImage> drawings;
   for (int k = 0; k < m; ++k) {
     if (options.progress) options.progress("tracing " + scene.keys[k].name, static_cast<double>(k) / m);
     try {
@@ -334,11 +335,13 @@ BuiltScene buildMultimesh(const Scene& scene, const MultimeshBuildOptions& optio
         const TraceCache::Traced& traced = options.traceCache->traced(scene.keys[k].drawing, scene.tracing, scene.keys[k].holes);
         built.drawingSizes.push_back(traced.size);
         built.outlines.push_back(traced.outlines);
+        if (artwork) drawings.push_back(options.traceCache->drawing(scene.keys[k].drawing));
       } else {
-        const RgbaImage image = readPng(scene.keys[k].drawing);
+        RgbaImage image = readPng(scene.keys[k].drawing);
         built.drawingSizes.push_back({image.width, image.height});
         const ShapeMask mask = shapeMask(image, scene.tracing, scene.keys[k].holes, scene.keys[k].drawing);
         built.outlines.push_back(traceOutlines(mask, scene.tracing, scene.keys[k].drawing));
+        if (artwork) drawings.push_back(std::move(image));
       }
     } catch (const InputError& e) {
       throw InputError(std::filesystem::path(scene.file).filename().string() + ": key " + inQuotes(scene.keys[k].name) +
@@ -372,7 +375,7 @@ BuiltScene buildMultimesh(const Scene& scene, const MultimeshBuildOptions& optio
       throw InputError(file + ": key " + inQuotes(scene.keys[scene.reference].name) + ": cannot mesh: " + e.what());
     }
     InteriorPins pins = interiorPins(scene, mesh, edgeLength);
-    if (correspondence == OutlineCorrespondence::kArtwork) anchorArtwork(scene, mesh, edgeLength, options.traceCache, pins);
+    if (correspondence == OutlineCorrespondence::kArtwork) anchorArtwork(drawings, mesh, edgeLength, pins);
     Attempt result = mapKeys(scene, boundary, mesh, pins, edgeLength, options);
     if (result.multimesh) {
       built.multimesh = std::move(result.multimesh);

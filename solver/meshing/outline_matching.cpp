@@ -85,11 +85,6 @@ void placeShapeKnots(SharedBoundary& boundary, int reference, const SharedBounda
   for (size_t a = 0; a < boundary.arcs.size(); ++a) {
     BoundaryArc& arc = boundary.arcs[a];
     if (arc.partner >= 0) continue;  // cut sides stay copies of each other
-    // The point of key k at fraction f of this arc.
-    const auto point = [&](int k, double f) {
-      const KeyBoundary& kb = boundary.keys[k];
-      return kb.loops[arc.loop].at(kb.arcStarts[arc.loop][arc.indexInLoop] + f * boundary.arcLength(k, static_cast<int>(a)));
-    };
     const size_t knots = arc.knotCornerIn.size();
     std::vector<std::vector<double>> fractions;  // [knot][key], the new list
     std::vector<std::vector<char>> cornerIn;
@@ -108,7 +103,7 @@ void placeShapeKnots(SharedBoundary& boundary, int reference, const SharedBounda
         const int n = std::clamp(static_cast<int>(std::ceil(longest / matching.spacing)) + 1, 8, matching.maxSamples);
         const auto sample = [&](int k) {
           std::vector<Eigen::Vector2d> p(n);
-          for (int i = 0; i < n; ++i) p[i] = point(k, from[k] + (to[k] - from[k]) * i / (n - 1));
+          for (int i = 0; i < n; ++i) p[i] = boundary.atFraction(k, static_cast<int>(a), from[k] + (to[k] - from[k]) * i / (n - 1));
           return p;
         };
         const std::vector<Eigen::Vector2d> ref = sample(reference);

@@ -369,10 +369,12 @@ int SharedBoundary::knotAt(int arc, double u) const {
   return -1;
 }
 
-Eigen::Vector2d SharedBoundary::at(int key, int arc, double u) const {
+Eigen::Vector2d SharedBoundary::at(int key, int arc, double u) const { return atFraction(key, arc, fraction(key, arc, u)); }
+
+Eigen::Vector2d SharedBoundary::atFraction(int key, int arc, double f) const {
   const BoundaryArc& a = arcs[arc];
   const KeyBoundary& kb = keys[key];
-  return kb.loops[a.loop].at(kb.arcStarts[a.loop][a.indexInLoop] + fraction(key, arc, u) * arcLength(key, arc));
+  return kb.loops[a.loop].at(kb.arcStarts[a.loop][a.indexInLoop] + f * arcLength(key, arc));
 }
 
 double SharedBoundary::chordDeviation(int key, int arc, double u0, double u1, double u2) const {

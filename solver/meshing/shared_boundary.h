@@ -67,6 +67,8 @@ struct SharedBoundary {
   int knotAt(int arc, double u) const;
   // The point of key `key` at u in [0, 1] along arc `arc`.
   Eigen::Vector2d at(int key, int arc, double u) const;
+  // The point of key `key` at fraction f in [0, 1] of arc `arc`'s length there (at: f = fraction(key, arc, u)).
+  Eigen::Vector2d atFraction(int key, int arc, double f) const;
   // Largest distance of key `key`'s outline between u0 <= u1 <= u2 along arc `arc` from
   // the chords u0 -> u1 and u1 -> u2 between their points (px); u1 = u2 for a single chord.
   double chordDeviation(int key, int arc, double u0, double u1, double u2) const;
