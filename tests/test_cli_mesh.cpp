@@ -145,3 +145,28 @@ TEST_CASE("cli: mesh notes a key Comesh left under 10 degrees, and what to do") 
   CHECK_THAT(run.err, Matches(R"(inbetween: note: scene\.json: Comesh Optimization left key "polygon"'s smallest angle [0-9.]+ -> [0-9.]+ deg )"
                               R"(\(under 10 deg, or above 20, where the initial map was not\): a sliver.*--no-comesh.*"edge_length".*\n)"));
 }
+
+TEST_CASE("cli: mesh --suggest lists the cat's corners the shape matching pairs: the body's where every key has "
+          "them, sure; printed in the scene's key order") {
+  const std::string scene = std::string(INBETWEEN_SOURCE_DIR) + "/tests/correspondence/cat-tail/scene.json";
+  const Json summary = meshSummary({"mesh", scene, "--json", "--suggest", "--no-pictures", "-o", scratchPath("suggest/cat.ibmesh")});
+  const Json& suggestions = summary.at("suggestions");
+  REQUIRE(suggestions.size() >= 5);
+  int still = 0;
+  double previous = 1;
+  for (const Json& s : suggestions) {
+    INFO(s.dump());
+    const double confidence = s.at("confidence").get<double>();
+    CHECK(confidence <= previous);  // surest first
+    CHECK(confidence >= 0.3);
+    previous = confidence;
+    CHECK(s.at("at").size() == 3);
+    CHECK(s.at("name").get<std::string>().rfind("s", 0) == 0);
+    // The head and body are the same drawing in every key: their corners are paired in place, sure.
+    if (s.at("moved").get<double>() < 0.5) still += confidence >= 0.85;
+  }
+  CHECK(still >= 5);
+  const CommandRun text = inbetween({"mesh", scene, "--suggest", "--no-pictures", "-o", scratchPath("suggest/cat2.ibmesh")});
+  REQUIRE(text.code == 0);
+  CHECK_THAT(text.out, Catch::Contains("suggested features: ") && Matches("(.|\n)*s1 +confidence 1.00 +moved +0.0 px +down \\(.*\\) out \\(.*\\) up \\((.|\n)*"));
+}

@@ -33,12 +33,14 @@ double relativeAngle(const Eigen::MatrixX2d& x, const Eigen::MatrixX2d& y) {
 
 }  // namespace
 
-TEST_CASE("interpolation: w = e_i reproduces key i where it was drawn, on every fixture") {
+TEST_CASE("interpolation: w = e_i reproduces key i where it was drawn, on every fixture, placed by the blend or by what stays still") {
+  InterpolationParams params;
+  params.placement = GENERATE(Placement::kBlend, Placement::kStill);
   for (const auto& f : ib::test::allFixtures()) {
     const int m = f.mesh.keyCount();
-    Interpolator solver(f.mesh, {}, ib::test::tightSolverOptions());
+    Interpolator solver(f.mesh, params, ib::test::tightSolverOptions());
     for (int i = 0; i < m; ++i) {
-      INFO(f.name << ", key " << i);
+      INFO(f.name << ", key " << i << ", placement " << int(params.placement));
       // Start far away: from the next key's drawing, so the solve has real work to do.
       const Eigen::MatrixX2d start = f.mesh.keyPositions((i + 1) % m);
       const InterpolationResult r = solver.solve(unit(m, i), &start);
@@ -145,11 +147,14 @@ TEST_CASE("interpolation: stiffer triangles deform less, in either shape metric"
 }
 
 TEST_CASE("interpolation: analytic gradients agree with central finite differences") {
-  // ARAP, placement tie and cohesive terms, including P's dependence on x when alpha != 1/2.
+  // ARAP, placement tie (uniform or weighted by stillness) and cohesive terms, including P's
+  // dependence on x when alpha != 1/2.
   const double alpha = GENERATE(0.2, 0.5, 0.9);
+  const Placement placement = GENERATE(Placement::kBlend, Placement::kStill);
   auto f = ib::test::gluedSquares(5, 1.0, 0.3);
   InterpolationParams params;
   params.cohesive.alpha = alpha;
+  params.placement = placement;
   params.cohesive.tau = 1e9;
   Interpolator solver(f.mesh, params, SolverOptions{});
   const Eigen::Vector2d w(0.6, 0.4);
@@ -165,7 +170,7 @@ TEST_CASE("interpolation: analytic gradients agree with central finite differenc
       plus(v, d) += h;
       minus(v, d) -= h;
       const double numeric = (solver.evaluate(plus, w).energy - solver.evaluate(minus, w).energy) / (2 * h);
-      INFO("alpha " << alpha << " vertex " << v << " coordinate " << d);
+      INFO("alpha " << alpha << " placement " << int(placement) << " vertex " << v << " coordinate " << d);
       REQUIRE(at.gradient(v, d) == Approx(numeric).margin(1e-6 * at.gradient.cwiseAbs().maxCoeff()).epsilon(1e-5));
     }
 }
@@ -222,7 +227,10 @@ TEST_CASE("interpolation: on a mesh large enough for several threads, 2 threads 
   SolverOptions one = ib::test::tightSolverOptions(), two = ib::test::tightSolverOptions();
   one.threads = 1;
   two.threads = 2;
-  Interpolator single(f.mesh, {}, one), split(f.mesh, {}, two);
+  InterpolationParams params;
+  params.placement = GENERATE(Placement::kBlend, Placement::kStill);
+  INFO("placement " << int(params.placement));
+  Interpolator single(f.mesh, params, one), split(f.mesh, params, two);
   REQUIRE(split.threads() == 2);
   Eigen::VectorXd middle(2);
   middle << 0.4, 0.6;

@@ -6,12 +6,14 @@
 #include "comesh/comesh.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "meshing/matched_features.h"
 #include "meshing/mesh_svg.h"
 #include "multimesh/multimesh_io.h"
 #include "pipeline/scene_multimesh.h"
 #include "progress.h"
 #include "scene/scene.h"
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <optional>
@@ -22,7 +24,7 @@ namespace ib {
 namespace {
 
 constexpr const char* kUsage =
-    "usage: inbetween mesh SCENE [-o OUT] [--json] [--no-pictures] [--no-comesh]\n"
+    "usage: inbetween mesh SCENE [-o OUT] [--json] [--no-pictures] [--no-comesh] [--suggest]\n"
     "\n"
     "Traces the scene's drawings, applies features and cuts, meshes the reference key, maps the\n"
     "mesh onto every key without foldovers, then improves every key's triangles and every map\n"
@@ -36,7 +38,9 @@ constexpr const char* kUsage =
     "  --no-pictures     skip the pictures, one SVG per key: OUT's name .KEY.svg, and for the\n"
     "                    initial map OUT's name .initial.KEY.svg (mesh over drawing, cohesive\n"
     "                    edges red, features and interior features as dots)\n"
-    "  --no-comesh       write the initial map only, as OUT\n";
+    "  --no-comesh       write the initial map only, as OUT\n"
+    "  --suggest         also list the outline's corners as the shape matching pairs them across\n"
+    "                    the keys, with a confidence (0-1), as features to add to the scene\n";
 
 namespace fs = std::filesystem;
 
@@ -62,12 +66,51 @@ void writePictures(const Scene& scene, const SceneMultimesh& built, const Multim
   }
 }
 
+// Suggestions as JSON, named s1, s2, ... past the scene's feature names: [{"name", "confidence",
+// "moved" (px), "at": {key: [x, y]}}].
+nlohmann::json suggestionsJson(const Scene& scene, const std::vector<MatchedFeature>& suggestions) {
+  nlohmann::json out = nlohmann::json::array();
+  int next = 1;
+  const auto taken = [&](const std::string& name) {
+    for (const KeySpec& key : scene.keys)
+      if (key.features.count(name) || key.interiorFeatures.count(name)) return true;
+    return false;
+  };
+  for (const MatchedFeature& s : suggestions) {
+    std::string name;
+    do name = "s" + std::to_string(next++);
+    while (taken(name));
+    nlohmann::json at = nlohmann::json::object();
+    for (size_t k = 0; k < scene.keys.size(); ++k)
+      at[scene.keys[k].name] = {std::round(s.at[k].x() * 10) / 10, std::round(s.at[k].y() * 10) / 10};
+    out.push_back({{"name", name}, {"confidence", std::round(s.confidence * 100) / 100},
+                   {"moved", std::round(s.moved * 10) / 10}, {"at", at}});
+  }
+  return out;
+}
+
+void printSuggestions(const Scene& scene, const nlohmann::json& suggestions) {
+  std::printf("suggested features: %zu (the outlines' corners as the shape matching pairs them across keys)\n",
+              suggestions.size());
+  for (const auto& s : suggestions) {
+    std::printf("  %-4s confidence %.2f  moved %5.1f px ", s["name"].get<std::string>().c_str(), s["confidence"].get<double>(),
+                s["moved"].get<double>());
+    for (const KeySpec& key : scene.keys) {  // in the scene's order
+      const nlohmann::json& at = s["at"][key.name];
+      std::printf(" %s (%.1f, %.1f)", key.name.c_str(), at[0].get<double>(), at[1].get<double>());
+    }
+    std::printf("\n");
+  }
+  if (!suggestions.empty())
+    std::printf("to keep one, add it to every key's \"features\" at that key's point (docs/scene-format.md)\n");
+}
+
 }  // namespace
 
 int runMesh(const std::vector<std::string>& rawArgs) {
   const std::vector<std::string> args = cli::expandShortOutput(rawArgs);
   if (cli::printHelpIfAsked(args, kUsage)) return 0;
-  const cli::Arguments options("mesh", args, {"output"}, {"json", "no-pictures", "no-comesh"});
+  const cli::Arguments options("mesh", args, {"output"}, {"json", "no-pictures", "no-comesh", "suggest"});
   if (options.positional().size() != 1) throw InputError("mesh: needs exactly one SCENE file (see `inbetween mesh --help`)");
   const std::string scenePath = options.positional()[0];
   const Scene scene = loadScene(scenePath);
@@ -109,6 +152,7 @@ int runMesh(const std::vector<std::string>& rawArgs) {
     summary["initial"]["multimesh"] = output.string();
     if (pictures) writePictures(scene, built, *built.initial, output, "", summary["initial"]);
   }
+  if (options.flag("suggest")) summary["suggestions"] = suggestionsJson(scene, matchedFeatures(scene, built.shapes));
   progress.finish();
   if (folder) folder->keep();
   for (const std::string& note : built.notes) std::fprintf(stderr, "inbetween: note: %s\n", note.c_str());
@@ -120,6 +164,7 @@ int runMesh(const std::vector<std::string>& rawArgs) {
   std::printf("%s: %d vertices, %d triangles (edge length %.3g px)\n", scenePath.c_str(), final["vertices"].get<int>(),
               final["triangles"].get<int>(), built.edgeLength);
   printMeshReport(summary["initial"], after, table);
+  if (summary.contains("suggestions")) printSuggestions(scene, summary["suggestions"]);
   if (after) std::printf("wrote %s (initial map: %s)\n", output.string().c_str(), summary["initial"]["multimesh"].get<std::string>().c_str());
   else std::printf("wrote %s\n", output.string().c_str());
   return 0;

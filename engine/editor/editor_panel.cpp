@@ -133,17 +133,35 @@ void EditorView::panel() {
 void EditorView::suggestionsPanel() {
   ImGui::Separator();
   if (ImGui::Button("Suggest features")) suggest();
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("propose features where every key's outline has a corresponding corner");
+  drawnAt("Suggest features");
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("propose features: where the shape matching pairs the outlines' corners between the features placed, "
+                      "or, before any, where every key's outline has a corresponding corner");
   if (suggestions_.empty()) return;
   ImGui::SameLine();
-  if (ImGui::Button("Accept all")) {
+  const bool all = ImGui::Button("Accept all");
+  drawnAt("Accept all");
+  if (all) {
     acceptAll();
     return;
   }
+  // Each row's label, and the column the buttons start at: past the widest label.
+  std::vector<std::string> labels;
+  float column = 0;
+  for (size_t i = 0; i < suggestions_.size(); ++i) {
+    char label[64];
+    if (suggestions_[i].confidence >= 0)
+      std::snprintf(label, sizeof label, "?%zu  sure %.2f, moved %.0f px", i + 1, suggestions_[i].confidence, suggestions_[i].moved);
+    else
+      std::snprintf(label, sizeof label, "?%zu  corner, %.0f deg", i + 1, suggestions_[i].turn * 180 / 3.14159265358979);
+    labels.emplace_back(label);
+    column = std::max(column, ImGui::CalcTextSize(label).x);
+  }
+  column += ImGui::GetCursorPosX() + ImGui::GetStyle().ItemSpacing.x * 2;
   for (size_t i = 0; i < suggestions_.size(); ++i) {
     ImGui::PushID(static_cast<int>(i));
-    ImGui::Text("?%zu  corner, %.0f deg", i + 1, suggestions_[i].turn * 180 / 3.14159265358979);
-    ImGui::SameLine(160);
+    ImGui::TextUnformatted(labels[i].c_str());
+    ImGui::SameLine(column);
     if (ImGui::SmallButton("accept")) {
       accept(i);
       ImGui::PopID();

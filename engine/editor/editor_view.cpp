@@ -149,9 +149,13 @@ void EditorView::report(const std::string& text, bool error) {
   player_.messages().push_back({text, error});
 }
 
-void EditorView::run(const edit::SceneEdit& edit) {
+void EditorView::run(const edit::SceneEdit& edit) { attempt([&] { session_.apply(edit); }); }
+
+void EditorView::run(const std::vector<edit::SceneEdit>& edits) { attempt([&] { session_.applyAll(edits); }); }
+
+void EditorView::attempt(const std::function<void()>& change) {
   try {
-    session_.apply(edit);
+    change();
     status_.clear();
     editTime_ = std::chrono::steady_clock::now();
   } catch (const InputError& e) {
@@ -274,6 +278,17 @@ bool EditorView::shortcut(int key, bool ctrl, bool shift) {
 void EditorView::suggest() {
   std::vector<std::vector<Outline>> outlines;
   for (int k = 0; k < session_.keyCount(); ++k) outlines.push_back(session_.outlines(k));
+  // Once features are placed, what the shape matching pairs between them; before (or when the
+  // keys' features do not match up yet), corners every key has.
+  try {
+    suggestions_ = matchedSuggestions(session_.document().scene(), outlines);
+  } catch (const InputError&) {
+    suggestions_.clear();
+  }
+  if (!suggestions_.empty()) {
+    report(std::to_string(suggestions_.size()) + " features suggested where the shape matching pairs the outlines' corners", false);
+    return;
+  }
   suggestions_ = suggestFeatures(session_.marks(), outlines);
   report(suggestions_.empty() ? "no corners found that every key has" : std::to_string(suggestions_.size()) + " features suggested at corners every key has",
          false);
@@ -283,8 +298,10 @@ void EditorView::accept(size_t suggestion) {
   const FeatureSuggestion s = suggestions_.at(suggestion);
   suggestions_.erase(suggestions_.begin() + static_cast<std::ptrdiff_t>(suggestion));
   const std::string name = session_.freshName("corner");
+  std::vector<edit::SceneEdit> edits;  // the feature in every key: one undo step
   for (int k = 0; k < session_.keyCount() && k < static_cast<int>(s.at.size()); ++k)
-    run(edit::SetFeature{session_.marks().keys[static_cast<size_t>(k)].name, name, s.at[static_cast<size_t>(k)]});
+    edits.push_back(edit::SetFeature{session_.marks().keys[static_cast<size_t>(k)].name, name, s.at[static_cast<size_t>(k)]});
+  run(edits);
 }
 
 void EditorView::acceptAll() {

@@ -16,6 +16,7 @@
 #include "renderers/drawing_sheet.h"
 
 #include <chrono>
+#include <functional>
 #include <map>
 #include <optional>
 #include <string>
@@ -125,6 +126,8 @@ class EditorView {
   double pixelsPerUnit(int key) const;  // window px per drawing px
   int viewUnder(double x, double y) const;
   void run(const edit::SceneEdit& edit);  // applies, or reports the message
+  void run(const std::vector<edit::SceneEdit>& edits);  // all as one undo step, or none and the message
+  void attempt(const std::function<void()>& change);     // runs a change of the document, or reports its InputError
   void report(const std::string& text, bool error);
   void loadDrawings();
   void featureInput(int key, const Eigen::Vector2d& p, bool pressed, bool held, bool released);

@@ -1,6 +1,8 @@
 #include "editor/feature_suggestions.h"
 
 #include "core/plane_geometry.h"
+#include "meshing/key_shape.h"
+#include "meshing/matched_features.h"
 #include "meshing/outline_corners.h"
 
 #include <algorithm>
@@ -77,6 +79,24 @@ std::vector<FeatureSuggestion> suggestFeatures(const DocumentMarks& marks, const
       if (everywhere) s.at[k] = corners[k][static_cast<size_t>(pick)].at;
     }
     if (everywhere) out.push_back(s);
+  }
+  return out;
+}
+
+std::vector<FeatureSuggestion> matchedSuggestions(const Scene& scene, const std::vector<std::vector<Outline>>& outlines) {
+  bool featured = false;
+  for (const KeySpec& key : scene.keys) featured = featured || !key.features.empty();
+  if (!featured || outlines.size() != scene.keys.size()) return {};
+  std::vector<KeyShape> shapes;
+  for (int k = 0; k < static_cast<int>(scene.keys.size()); ++k)
+    shapes.push_back(buildKeyShape(scene, k, outlines[static_cast<size_t>(k)], KeyShapeOptions{}));
+  std::vector<FeatureSuggestion> out;
+  for (const MatchedFeature& matched : matchedFeatures(scene, shapes)) {
+    FeatureSuggestion s;
+    s.at = matched.at;
+    s.confidence = matched.confidence;
+    s.moved = matched.moved;
+    out.push_back(std::move(s));
   }
   return out;
 }

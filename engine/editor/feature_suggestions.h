@@ -8,6 +8,7 @@
 #pragma once
 
 #include "editor/editor_marks.h"
+#include "scene/scene.h"
 
 #include <Eigen/Core>
 #include <string>
@@ -18,11 +19,22 @@ namespace ib::editor {
 struct FeatureSuggestion {
   std::vector<Eigen::Vector2d> at;  // [key]: on its outline, drawing pixels
   double turn = 0;                  // radians, the reference key's corner's turning (> 0 convex)
+  // From the shape matching between the features placed (matchedSuggestions): how sure, in
+  // [0, 1], and how far the farthest key moved it (px); -1 and 0 from the corner pairing.
+  double confidence = -1;
+  double moved = 0;
 };
 
 // outlines[k]: key k's traced outlines (EditorSession::outlines). Corners closer than `clearance`
 // px to a feature a key places already are not proposed. Keys without an outline give none.
 std::vector<FeatureSuggestion> suggestFeatures(const DocumentMarks& marks, const std::vector<std::vector<Outline>>& outlines,
                                                double clearance = 6);
+
+// Once the keys carry features: the feature pairs the shape matching finds between them
+// (meshing/matched_features.h: the reference key's outline corners and where the matching puts
+// them in every key, with a confidence), so the user sees what "correspondence": "artwork"
+// decides. scene: the document's; outlines[k]: key k's traced outlines. Empty when no key has a
+// feature yet; InputError when the keys' shapes do not match up (their features differ).
+std::vector<FeatureSuggestion> matchedSuggestions(const Scene& scene, const std::vector<std::vector<Outline>>& outlines);
 
 }  // namespace ib::editor

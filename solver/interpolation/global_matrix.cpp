@@ -49,7 +49,7 @@ const Eigen::SparseMatrix<double>& GlobalMatrix::assemble(const GlobalMatrixFram
       for (int c = 0; c < 4; ++c) assembly_.add(vert[r], vert[c], k * ((r / 2 == c / 2) ? 2.0 : 1.0) * sign[r] * sign[c]);
   }
   for (int v = 0; v < vertices_; ++v)
-    assembly_.add(v, v, sources_.tie + (frame.springs.size() ? frame.springs(v) : 0.0));
+    assembly_.add(v, v, (sources_.ties ? (*sources_.ties)(v) : sources_.tie) + (frame.springs.size() ? frame.springs(v) : 0.0));
   if (sources_.nonOverlap) {
     const double k = sources_.enforceNonOverlap ? sources_.nonOverlap->stiffness() : 0.0;
     for (int v : sources_.nonOverlap->allBoundaryVertices()) assembly_.add(v, v, k);

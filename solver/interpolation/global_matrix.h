@@ -33,6 +33,7 @@ struct GlobalMatrixSources {
   // pattern with value 0, so W_O can be switched on and off without a new pattern.
   bool enforceNonOverlap = true;
   const GapPull* gapPull = nullptr;  // the open keys' pull on the cuts' springs; null: none
+  const Eigen::VectorXd* ties = nullptr;  // mu m_v per vertex (n x 1) instead of tie; null: tie
 };
 
 // The frame H is wanted for.

@@ -45,6 +45,15 @@ struct CohesiveParams {
   std::vector<CutRelease> perTerm = {};
 };
 
+// What fixes where a shape stands (placement.h): the rigid motion every group of vertices may take
+// freely.
+enum class Placement {
+  kBlend,  // every vertex alike: each group's rigid fit to the keys' blend (the paper's frame)
+  kStill,  // vertices drawn at the same place in every key weigh 99 times more in that fit, so a
+           // body drawn the same in every key stays where it was drawn while a limb moves
+           // ("correspondence": "artwork"; docs/drawings-to-multimesh.md)
+};
+
 struct InterpolationParams {
   CohesiveParams cohesive;  // lambda, tau, alpha (normalized units)
   bool nonOverlap = false;  // enforce W_O (eq. 14); off by default, as in the paper
@@ -52,6 +61,7 @@ struct InterpolationParams {
   // blended by the weights (no shrinking or snapping under stretch; a departure from the paper),
   // or kPerKey, the paper's eq. 9. Default kShared (docs/solver.md, "Departures from the paper").
   ShapeMetric metric = ShapeMetric::kShared;
+  Placement placement = Placement::kBlend;  // set from the scene's correspondence (scene_frames.h)
 };
 
 }  // namespace ib

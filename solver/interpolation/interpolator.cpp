@@ -114,6 +114,7 @@ Interpolator::Impl::Impl(ThreadLayout layout, const InterpolationParams& params,
   // about 15% more iterations with area weights blended by w), and it must not depend on keys
   // with zero weight.
   vertexWeight_ = 1.0 / mesh.vertexCount();
+  updatePlacementWeights();
   cohesive_ = std::make_unique<CohesiveEnergy>(mesh, keys_, params.cohesive);
   checkCutTimings(params);
   gapPull_ = std::make_unique<GapPull>(mesh, keys_, *cohesive_, params.cohesive);
@@ -136,9 +137,20 @@ void Interpolator::Impl::updateStiffnessScale() {
   nonOverlap_->setStiffness(options_.nonOverlapStiffness * diagonal);
 }
 
+void Interpolator::Impl::updatePlacementWeights() {
+  if (params_.placement == Placement::kBlend) {
+    placementWeight_.resize(0);
+    placementTie_.resize(0);
+    return;
+  }
+  placementWeight_ = stillnessWeights(keys_, 1.0 / scale_);  // keys_ are in shape sizes
+  placementTie_ = options_.placementStiffness * placementWeight_;
+}
+
 GlobalMatrixSources Interpolator::Impl::matrixSources() const {
   GlobalMatrixSources sources{deformation_.get(), cohesive_.get(), nonOverlap_.get(),
                               options_.placementStiffness * vertexWeight_, stiffnessScale_};
+  if (placementTie_.size()) sources.ties = &placementTie_;
   sources.gapPull = gapPull_.get();
   sources.enforceNonOverlap = params_.nonOverlap;
   return sources;

@@ -33,7 +33,8 @@ void Interpolator::Impl::evaluateState(const Frame& frame, State& s) const {
   // E_P first: it also initializes the gradient. Each thread sums its own vertices; the sums
   // are added in block order (an OpenMP reduction would add them in arrival order, and frames
   // must be bit-identical from run to run).
-  const double tie = options_.placementStiffness * vertexWeight_;  // mu m_v
+  const double tie = options_.placementStiffness * vertexWeight_;  // mu m_v, or per vertex:
+  const double* ties = placementTie_.size() ? placementTie_.data() : nullptr;
   const double *x = s.x.col(0).data(), *y = s.x.col(1).data();
   const double *bx = frame.blend.col(0).data(), *by = frame.blend.col(1).data();
   double *gx = s.gradient.col(0).data(), *gy = s.gradient.col(1).data();
@@ -42,18 +43,28 @@ void Interpolator::Impl::evaluateState(const Frame& frame, State& s) const {
 #pragma omp parallel num_threads(teamFor(blocks))
   for (int p = omp_get_thread_num(); p < blocks; p += omp_get_num_threads()) {
     double sum = 0;
+    if (ties) {
 #pragma omp simd reduction(+ : sum)
-    for (int v = vertexSplit_.begin(p); v < vertexSplit_.end(p); ++v) {
-      const double dx = x[v] - bx[v], dy = y[v] - by[v];
-      sum += dx * dx + dy * dy;
-      gx[v] = tie * dx;
-      gy[v] = tie * dy;
+      for (int v = vertexSplit_.begin(p); v < vertexSplit_.end(p); ++v) {
+        const double dx = x[v] - bx[v], dy = y[v] - by[v];
+        sum += ties[v] * (dx * dx + dy * dy);
+        gx[v] = ties[v] * dx;
+        gy[v] = ties[v] * dy;
+      }
+    } else {
+#pragma omp simd reduction(+ : sum)
+      for (int v = vertexSplit_.begin(p); v < vertexSplit_.end(p); ++v) {
+        const double dx = x[v] - bx[v], dy = y[v] - by[v];
+        sum += dx * dx + dy * dy;
+        gx[v] = tie * dx;
+        gy[v] = tie * dy;
+      }
     }
     partial[p] = sum;
   }
   double placement = 0;
   for (double part : partial) placement += part;
-  s.placement = 0.5 * tie * placement;
+  s.placement = 0.5 * (ties ? placement : tie * placement);
   s.energy = s.placement;
   if (frame.springs.size()) s.energy += springEnergyOf(frame.springs, frame.springTarget, s.x, s.gradient);
   s.energy += deformation_->evaluate(s.x, frame.keys, s.gradient, vertexSplit_, triangleSplit_, params_.metric);
@@ -78,21 +89,26 @@ void Interpolator::Impl::addGapPull(const Frame& frame, State& s) const {
   GroupAngles angles{&groups_, std::vector<double>(static_cast<size_t>(groups), 0.0)};
   std::vector<Eigen::Vector2d> centre(static_cast<size_t>(groups)), target(static_cast<size_t>(groups));
   std::vector<double> dots(static_cast<size_t>(groups)), crosses(static_cast<size_t>(groups));
+  const auto weight = [this](int v) { return placementWeight_.size() ? placementWeight_(v) : 1.0; };
   for (int k = 0; k < groups; ++k) {
     Eigen::Vector2d c(0, 0), q(0, 0);
+    double mass = 0;
     for (int i = start[k]; i < start[k + 1]; ++i) {
-      c += s.x.row(members[i]).transpose();
-      q += frame.blend.row(members[i]).transpose();
+      const double m = weight(members[i]);
+      mass += m;
+      c += m * s.x.row(members[i]).transpose();
+      q += m * frame.blend.row(members[i]).transpose();
     }
-    const double count = std::max(1, start[k + 1] - start[k]);
-    centre[k] = c / count;
-    target[k] = q / count;
+    if (mass <= 0) mass = 1;
+    centre[k] = c / mass;
+    target[k] = q / mass;
     double dot = 0, cross = 0;
     for (int i = start[k]; i < start[k + 1]; ++i) {
       const int v = members[i];
+      const double m = weight(v);
       const Eigen::Vector2d a = s.x.row(v).transpose() - centre[k], b = frame.blend.row(v).transpose() - target[k];
-      dot += a.dot(b);
-      cross += a.x() * b.y() - a.y() * b.x();
+      dot += m * a.dot(b);
+      cross += m * (a.x() * b.y() - a.y() * b.x());
     }
     dots[k] = dot;
     crosses[k] = cross;
@@ -105,7 +121,7 @@ void Interpolator::Impl::addGapPull(const Frame& frame, State& s) const {
     if (dAngle[k] == 0 || n <= 0) continue;
     for (int i = start[k]; i < start[k + 1]; ++i) {
       const int v = members[i];
-      const Eigen::Vector2d b = frame.blend.row(v).transpose() - target[k];
+      const Eigen::Vector2d b = weight(v) * (frame.blend.row(v).transpose() - target[k]);
       const Eigen::Vector2d dTheta = -(dots[k] * Eigen::Vector2d(b.y(), -b.x()) - crosses[k] * b) / n;
       s.gradient.row(v) += dAngle[k] * dTheta.transpose();
     }
@@ -137,7 +153,7 @@ void Interpolator::Impl::align(const Frame& frame, const State& reference, Eigen
     groups_.update(links);
     groupLinks_ = std::move(links);
   }
-  alignGroups(x, frame.blend, groups_, vertexSplit_);
+  alignGroups(x, frame.blend, groups_, vertexSplit_, placementWeight_);
 }
 
 EnergyEvaluation Interpolator::Impl::evaluate(const Eigen::MatrixX2d& x, const Eigen::VectorXd& w) const {

@@ -54,7 +54,8 @@ class Interpolator::Impl {
   // The stiffness scale from the current kappa, and what is stated relative to it: the gradient
   // floor and the W_O penalty (constructor and setStiffness).
   void updateStiffnessScale();
-  GlobalMatrixSources matrixSources() const;  // what H is built from, with the current parameters
+  GlobalMatrixSources matrixSources() const;
+  void updatePlacementWeights();  // placementWeight_ and placementTie_ for params_.placement  // what H is built from, with the current parameters
   bool cancelled() const { return cancel_ && cancel_->load(std::memory_order_relaxed); }
   Frame makeFrame(const Eigen::VectorXd& w, const VertexSprings* springs) const;
   void evaluateState(const Frame& frame, State& state) const;
@@ -99,6 +100,8 @@ class Interpolator::Impl {
   double scale_ = 1;                       // shape size s
   std::vector<Eigen::MatrixX2d> keys_;     // X_i / s
   double vertexWeight_ = 0;                // placement weight m_v = 1/n of every vertex (placement.h)
+  Eigen::VectorXd placementWeight_;        // Placement::kStill's m_v per vertex; empty: vertexWeight_
+  Eigen::VectorXd placementTie_;           // mu m_v per vertex with placementWeight_; empty: none
   std::unique_ptr<DeformationEnergy> deformation_;
   std::unique_ptr<CohesiveEnergy> cohesive_;
   std::unique_ptr<GapPull> gapPull_;  // the open keys' pull on the cuts (CutTiming::kRelease)

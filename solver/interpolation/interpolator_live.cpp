@@ -58,6 +58,7 @@ void Interpolator::Impl::setParameters(const InterpolationParams& params) {
   validateInterpolationParams(params);
   checkCutTimings(params);
   params_ = params;
+  updatePlacementWeights();
   cohesive_->setParams(params.cohesive);
   gapPull_->setParams(params.cohesive);
   // H's spring constants follow lambda and alpha, its boundary entries non-overlap; the pattern

@@ -1,5 +1,6 @@
 #include "interpolation/placement.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <numeric>
@@ -66,35 +67,39 @@ void PlacementGroups::buildMembers() {
 
 namespace {
 
-// Aligns the vertices index(0..count-1) of x rigidly to target: centroids, then the angle
-// atan2(sum p x q, sum p . q) of the centred point sets p (x) and q (target).
-template <class Index>
-void alignSet(Eigen::MatrixX2d& x, const Eigen::MatrixX2d& target, int count, Index index) {
+// Aligns the vertices index(0..count-1) of x rigidly to target with weights weight(v):
+// weighted centroids, then the angle atan2(sum m p x q, sum m p . q) of the centred point sets
+// p (x) and q (target). A weight of 1.0 for every vertex gives the unweighted fit bit for bit.
+template <class Index, class Weight>
+void alignSet(Eigen::MatrixX2d& x, const Eigen::MatrixX2d& target, int count, Index index, Weight weight) {
   double* px = x.col(0).data();
   double* py = x.col(1).data();
   const double* tx = target.col(0).data();
   const double* ty = target.col(1).data();
   // The sums vectorize (simd reductions: a fixed order, the same every run).
-  double cx = 0, cy = 0, qx = 0, qy = 0;
-#pragma omp simd reduction(+ : cx, cy, qx, qy)
+  double mass = 0, cx = 0, cy = 0, qx = 0, qy = 0;
+#pragma omp simd reduction(+ : mass, cx, cy, qx, qy)
   for (int i = 0; i < count; ++i) {
     const int v = index(i);
-    cx += px[v];
-    cy += py[v];
-    qx += tx[v];
-    qy += ty[v];
+    const double m = weight(v);
+    mass += m;
+    cx += m * px[v];
+    cy += m * py[v];
+    qx += m * tx[v];
+    qy += m * ty[v];
   }
-  cx /= count;
-  cy /= count;
-  qx /= count;
-  qy /= count;
+  cx /= mass;
+  cy /= mass;
+  qx /= mass;
+  qy /= mass;
   double dot = 0, cross = 0;
 #pragma omp simd reduction(+ : dot, cross)
   for (int i = 0; i < count; ++i) {
     const int v = index(i);
+    const double m = weight(v);
     const double ax = px[v] - cx, ay = py[v] - cy, bx = tx[v] - qx, by = ty[v] - qy;
-    dot += ax * bx + ay * by;
-    cross += ax * by - ay * bx;
+    dot += m * (ax * bx + ay * by);
+    cross += m * (ax * by - ay * bx);
   }
   const double angle = std::atan2(cross, dot), c = std::cos(angle), s = std::sin(angle);
 #pragma omp simd
@@ -108,44 +113,47 @@ void alignSet(Eigen::MatrixX2d& x, const Eigen::MatrixX2d& target, int count, In
 
 // alignSet over all vertices, each block of rows summed and moved by one thread. The partial sums
 // are added in block order by every thread alike: bit-identical from run to run.
-void alignAll(Eigen::MatrixX2d& x, const Eigen::MatrixX2d& target, const RowSplit& rows) {
+template <class Weight>
+void alignAll(Eigen::MatrixX2d& x, const Eigen::MatrixX2d& target, const RowSplit& rows, Weight weight) {
   double* px = x.col(0).data();
   double* py = x.col(1).data();
   const double* tx = target.col(0).data();
   const double* ty = target.col(1).data();
   const int blocks = rows.threads();
-  const double count = static_cast<double>(x.rows());
-  std::vector<std::array<double, 4>> centroids(static_cast<size_t>(blocks));
+  std::vector<std::array<double, 5>> centroids(static_cast<size_t>(blocks));
   std::vector<std::array<double, 2>> turns(static_cast<size_t>(blocks));
 #pragma omp parallel num_threads(teamFor(blocks))
   {
     // The team may have fewer threads than blocks.
     const int self = omp_get_thread_num(), team = omp_get_num_threads();
     for (int p = self; p < blocks; p += team) {
-      double cx = 0, cy = 0, qx = 0, qy = 0;
-#pragma omp simd reduction(+ : cx, cy, qx, qy)
+      double mass = 0, cx = 0, cy = 0, qx = 0, qy = 0;
+#pragma omp simd reduction(+ : mass, cx, cy, qx, qy)
       for (int v = rows.begin(p); v < rows.end(p); ++v) {
-        cx += px[v];
-        cy += py[v];
-        qx += tx[v];
-        qy += ty[v];
+        const double m = weight(v);
+        mass += m;
+        cx += m * px[v];
+        cy += m * py[v];
+        qx += m * tx[v];
+        qy += m * ty[v];
       }
-      centroids[p] = {cx, cy, qx, qy};
+      centroids[p] = {cx, cy, qx, qy, mass};
     }
 #pragma omp barrier
-    std::array<double, 4> centre{};
+    std::array<double, 5> centre{};
     for (const auto& c : centroids)
-      for (int k = 0; k < 4; ++k) centre[k] += c[k];
-    for (double& c : centre) c /= count;
+      for (int k = 0; k < 5; ++k) centre[k] += c[k];
+    for (int k = 0; k < 4; ++k) centre[k] /= centre[4];
     // Plain variables, not a structured binding: clang cannot use a binding inside omp simd.
     const double cx = centre[0], cy = centre[1], qx = centre[2], qy = centre[3];
     for (int p = self; p < blocks; p += team) {
       double dot = 0, cross = 0;
 #pragma omp simd reduction(+ : dot, cross)
       for (int v = rows.begin(p); v < rows.end(p); ++v) {
+        const double m = weight(v);
         const double ax = px[v] - cx, ay = py[v] - cy, bx = tx[v] - qx, by = ty[v] - qy;
-        dot += ax * bx + ay * by;
-        cross += ax * by - ay * bx;
+        dot += m * (ax * bx + ay * by);
+        cross += m * (ax * by - ay * bx);
       }
       turns[p] = {dot, cross};
     }
@@ -167,24 +175,46 @@ void alignAll(Eigen::MatrixX2d& x, const Eigen::MatrixX2d& target, const RowSpli
   }
 }
 
-}  // namespace
-
-void alignGroups(Eigen::MatrixX2d& x, const Eigen::MatrixX2d& target, const PlacementGroups& groups,
-                 const RowSplit& rows) {
+template <class Weight>
+void alignGroupsWeighted(Eigen::MatrixX2d& x, const Eigen::MatrixX2d& target, const PlacementGroups& groups,
+                         const RowSplit& rows, Weight weight) {
   if (groups.groupCount() == 1 && rows.threads() > 1 && rows.size() == x.rows()) {
-    alignAll(x, target, rows);
+    alignAll(x, target, rows, weight);
     return;
   }
   if (groups.groupCount() == 1) {  // the common case, without indirection
-    alignSet(x, target, static_cast<int>(x.rows()), [](int i) { return i; });
+    alignSet(x, target, static_cast<int>(x.rows()), [](int i) { return i; }, weight);
     return;
   }
   const auto& start = groups.memberStart();
   const auto& members = groups.members();
   for (int k = 0; k < groups.groupCount(); ++k) {
     const int* list = members.data() + start[k];
-    alignSet(x, target, start[k + 1] - start[k], [list](int i) { return list[i]; });
+    alignSet(x, target, start[k + 1] - start[k], [list](int i) { return list[i]; }, weight);
   }
+}
+
+}  // namespace
+
+void alignGroups(Eigen::MatrixX2d& x, const Eigen::MatrixX2d& target, const PlacementGroups& groups,
+                 const RowSplit& rows, const Eigen::VectorXd& weights) {
+  if (weights.size() == 0) {
+    alignGroupsWeighted(x, target, groups, rows, [](int) { return 1.0; });
+    return;
+  }
+  const double* m = weights.data();
+  alignGroupsWeighted(x, target, groups, rows, [m](int v) { return m[v]; });
+}
+
+Eigen::VectorXd stillnessWeights(const std::vector<Eigen::MatrixX2d>& keys, double pixel) {
+  const Eigen::Index n = keys.empty() ? 0 : keys[0].rows();
+  Eigen::VectorXd m(n);
+  for (Eigen::Index v = 0; v < n; ++v) {
+    double spread = 0;  // the largest distance of a key's position from key 0's, in pixels
+    for (const auto& X : keys) spread = std::max(spread, (X.row(v) - keys[0].row(v)).norm() / pixel);
+    m(v) = 1.0 + kStillWeight * std::exp(-(spread / kStillRadius) * (spread / kStillRadius));
+  }
+  return m / m.sum();
 }
 
 }  // namespace ib

@@ -5,10 +5,11 @@
 #include "core/error.h"
 #include "core/plane_geometry.h"
 #include "core/png_image.h"
-#include "meshing/artwork_agreement.h"
+#include "meshing/interior_pins.h"
 #include "meshing/mesh_size.h"
 #include "meshing/shared_boundary.h"
 #include "meshing/stiffness_paint.h"
+#include "scene/parameters.h"
 
 #include "core/thread_block.h"
 
@@ -25,6 +26,17 @@
 namespace ib {
 
 namespace {
+
+// A choice's word from the parameter table, quoted: `"paired"`.
+std::string choiceName(const std::string& parameterName, int value) {
+  return inQuotes(formatParameterValue(parameter(parameterName), value));
+}
+
+std::string joined(const std::vector<std::string>& parts) {
+  std::string out;
+  for (const std::string& part : parts) out += (out.empty() ? "" : "; ") + part;
+  return out;
+}
 
 bool closedIn(const BoundaryArc& arc, int key) {
   return std::find(arc.closedIn.begin(), arc.closedIn.end(), key) != arc.closedIn.end();
@@ -46,71 +58,6 @@ void placeBoundary(const SharedBoundary& boundary, const ReferenceMesh& mesh, in
     if (arc.partner <= static_cast<int>(a) || !closedIn(arc, k)) continue;
     const std::vector<int> side = chainWithEnd(mesh, static_cast<int>(a)), other = chainWithEnd(mesh, arc.partner);
     for (size_t i = 0; i < side.size(); ++i) x.row(other[other.size() - 1 - i]) = x.row(side[i]);
-  }
-}
-
-// Key k's pinned interior points, in the order of ReferenceMesh::interior: its interior features
-// (by name: every key places the same), then round each one with a radius r a ring of
-// max(6, ceil(2 pi r / e)) points at distance r, e the edge length. Each ring point sits at the same
-// offset from its feature in every key, so the disc's triangles are translated copies of each
-// other in every key and the detail drawn there moves as one piece.
-std::vector<Eigen::Vector2d> interiorPoints(const Scene& scene, int k, double edgeLength) {
-  const KeySpec& key = scene.keys[k];
-  std::vector<Eigen::Vector2d> out;
-  for (const auto& [name, p] : key.interiorFeatures) out.push_back(p);
-  for (const auto& [name, r] : key.interiorRadii) {
-    const int n = std::max(6, static_cast<int>(std::ceil(2 * M_PI * r / edgeLength)));
-    for (int j = 0; j < n; ++j) {
-      const double angle = 2 * M_PI * j / n;
-      out.push_back(key.interiorFeatures.at(name) + r * Eigen::Vector2d(std::cos(angle), std::sin(angle)));
-    }
-  }
-  return out;
-}
-
-// The reference mesh's pinned interior vertices and where each sits in every key (px): the
-// vertices of mesh.interior at interiorPoints, then every other vertex inside the disc of a feature
-// with a radius, at the same offset from the feature as in the reference key (the mesher's and the
-// split's points there too, so that the whole disc is a translated copy in every key).
-// Vertices placed in every key before the rest is mapped: the interior features (and their
-// discs), then, with "correspondence": "artwork", the artwork's anchors (anchorArtwork), placed
-// only in the initial map (Comesh moves them like any other vertex).
-struct InteriorPins {
-  std::vector<int> vertices;
-  std::vector<std::vector<Eigen::Vector2d>> targets;  // [key][pin]
-  size_t features = 0;  // the first `features` pins are interior features: Comesh keeps them
-};
-
-InteriorPins interiorPins(const Scene& scene, const ReferenceMesh& mesh, double edgeLength) {
-  InteriorPins pins;
-  pins.vertices = mesh.interior;
-  for (int k = 0; k < static_cast<int>(scene.keys.size()); ++k) pins.targets.push_back(interiorPoints(scene, k, edgeLength));
-  std::vector<char> pinned(mesh.points.size(), 0);
-  for (int v : mesh.interior) pinned[v] = 1;
-  const KeySpec& reference = scene.keys[scene.reference];
-  for (const auto& [name, r] : reference.interiorRadii) {
-    const Eigen::Vector2d centre = reference.interiorFeatures.at(name);
-    for (size_t v = 0; v < mesh.points.size(); ++v) {
-      if (pinned[v] || mesh.tags[v].arc >= 0 || (mesh.points[v] - centre).norm() >= r) continue;
-      pinned[v] = 1;
-      pins.vertices.push_back(static_cast<int>(v));
-      for (size_t k = 0; k < scene.keys.size(); ++k)
-        pins.targets[k].push_back(scene.keys[k].interiorFeatures.at(name) + (mesh.points[v] - centre));
-    }
-  }
-  pins.features = pins.vertices.size();
-  return pins;
-}
-
-// The artwork's anchors (meshing/artwork_agreement.h: artworkAnchors), each held where the
-// reference key has it, in every key: what did not change in the drawings does not move.
-void anchorArtwork(const std::vector<RgbaImage>& drawings, const ReferenceMesh& mesh, double edgeLength, InteriorPins& pins) {
-  std::vector<char> onBoundary(mesh.points.size(), 0), taken(mesh.points.size(), 0);
-  for (size_t v = 0; v < mesh.points.size(); ++v) onBoundary[v] = mesh.tags[v].arc >= 0;
-  for (int v : pins.vertices) taken[v] = 1;
-  for (int v : artworkAnchors(drawings, edgeLength, mesh.points, mesh.triangles, onBoundary, taken)) {
-    pins.vertices.push_back(v);
-    for (auto& targets : pins.targets) targets.push_back(mesh.points[v]);
   }
 }
 
@@ -174,6 +121,7 @@ ComeshBoundary comeshBoundary(const SharedBoundary& boundary, const ReferenceMes
   out.arcLength = [shared](int key, int arc) { return shared->arcLength(key, arc); };
   out.pinned.assign(n, 0);
   for (size_t p = 0; p < pins.features; ++p) out.pinned[pins.vertices[p]] = 1;
+  for (int v : deepAnchors(mesh, pins)) out.pinned[v] = 1;
   out.heldIn.assign(keys, std::vector<char>(n, 0));
   for (size_t v = 0; v < n; ++v) {
     const int arc = mesh.tags[v].arc, knot = arc >= 0 ? boundary.knotAt(arc, mesh.tags[v].u) : -1;
@@ -354,56 +302,80 @@ BuiltScene buildMultimesh(const Scene& scene, const MultimeshBuildOptions& optio
   // before any meshing (meshing/mesh_size.h).
   double edgeLength = meshEdgeLength(scene, built.outlines);
   for (int k = 0; k < m; ++k) checkInteriorFeatures(scene, k, built.outlines[k], built.shapes[k], edgeLength);
-  // With "correspondence": "artwork", a key that folds is tried again by arc length at the same
-  // edge length before the edge length is refined (BuiltScene::fallback says so).
-  OutlineCorrespondence correspondence = scene.correspondence;
-  for (int attempt = 0;; ++attempt) {
-    SharedBoundaryOptions bo;
-    bo.edgeLength = edgeLength;
-    bo.corners = scene.corners;
-    bo.correspondence = correspondence;
-    const SharedBoundary boundary = matchBoundaries(scene, built.shapes, bo);
-    if (options.progress)
-      options.progress("meshing " + scene.keys[scene.reference].name + " (" +
-                       estimatedSize(built.outlines[scene.reference], edgeLength) + ")", 0);
-    ConformingMeshOptions mo;
-    mo.maxEdgeLength = edgeLength;
-    ReferenceMesh mesh;
-    try {
-      mesh = meshReference(boundary, scene.reference, mo, interiorPoints(scene, scene.reference, edgeLength));
-    } catch (const InputError& e) {
-      throw InputError(file + ": key " + inQuotes(scene.keys[scene.reference].name) + ": cannot mesh: " + e.what());
+  // What is tried until a setting maps every key without folds (BuiltScene::fallback): the scene's
+  // corners, then those that hold the correspondence less ("vertices", "paired", "off"), each from
+  // the first edge length down to options.refinements finer ones; at every edge length, a key
+  // that folds under "artwork" is tried again by arc length before the edge length is refined.
+  std::vector<CornerHandling> cornerChain = {scene.corners};
+  if (scene.corners == CornerHandling::kVertices) cornerChain.push_back(CornerHandling::kPaired);
+  if (scene.corners != CornerHandling::kOff) cornerChain.push_back(CornerHandling::kOff);
+  const double firstEdgeLength = edgeLength;
+  std::vector<std::string> fallbacks;  // what folded, one entry per setting given up
+  std::string failure;                 // the last fold: `key "k" near (x, y)`
+  std::string failedKey;               // that key's name, quoted
+  bool finerFits = true;
+  for (CornerHandling corners : cornerChain) {
+    edgeLength = firstEdgeLength;
+    OutlineCorrespondence correspondence = scene.correspondence;
+    for (int attempt = 0;; ++attempt) {
+      SharedBoundaryOptions bo;
+      bo.edgeLength = edgeLength;
+      bo.corners = corners;
+      bo.correspondence = correspondence;
+      const SharedBoundary boundary = matchBoundaries(scene, built.shapes, bo);
+      if (options.progress)
+        options.progress("meshing " + scene.keys[scene.reference].name + " (" +
+                         estimatedSize(built.outlines[scene.reference], edgeLength) + ")", 0);
+      ConformingMeshOptions mo;
+      mo.maxEdgeLength = edgeLength;
+      ReferenceMesh mesh;
+      try {
+        mesh = meshReference(boundary, scene.reference, mo, interiorPoints(scene, scene.reference, edgeLength));
+      } catch (const InputError& e) {
+        throw InputError(file + ": key " + inQuotes(scene.keys[scene.reference].name) + ": cannot mesh: " + e.what());
+      }
+      InteriorPins pins = interiorPins(scene, mesh, edgeLength);
+      if (correspondence == OutlineCorrespondence::kArtwork) anchorArtwork(drawings, mesh, edgeLength, pins);
+      Attempt result = mapKeys(scene, boundary, mesh, pins, edgeLength, options);
+      if (result.multimesh) {
+        built.multimesh = std::move(result.multimesh);
+        built.boundary = comeshBoundary(boundary, mesh, pins, m);
+        built.report = std::move(result.report);
+        built.edgeLength = edgeLength;
+        built.attempts = static_cast<int>(built.failedAttempts.size()) + 1;
+        if (!fallbacks.empty())
+          built.fallback = joined(fallbacks) + "; built with corners " + choiceName("corners", int(corners)) +
+                           " and correspondence " + choiceName("correspondence", int(correspondence)) + " instead";
+        built.multimesh->validate();
+        return built;
+      }
+      failedKey = inQuotes(scene.keys[result.failedKey].name);
+      failure = "key " + failedKey + " near " + formatPoint(result.failedAt);
+      built.failedAttempts.push_back("at " + formatLength(edgeLength) + " px, corners " + choiceName("corners", int(corners)) +
+                                     ", correspondence " + choiceName("correspondence", int(correspondence)) + ", key " +
+                                     failedKey + " folded near " + formatPoint(result.failedAt));
+      if (correspondence == OutlineCorrespondence::kArtwork) {
+        fallbacks.push_back("correspondence \"artwork\" folded " + failure + " at edge length " +
+                            formatLength(edgeLength) + " px");
+        correspondence = OutlineCorrespondence::kOutline;
+        --attempt;  // the same edge length, by arc length
+        continue;
+      }
+      finerFits = withinMeshLimit(scene, built.outlines[scene.reference], edgeLength / 1.5);
+      if (attempt >= options.refinements || !finerFits) break;
+      edgeLength /= 1.5;
     }
-    InteriorPins pins = interiorPins(scene, mesh, edgeLength);
-    if (correspondence == OutlineCorrespondence::kArtwork) anchorArtwork(drawings, mesh, edgeLength, pins);
-    Attempt result = mapKeys(scene, boundary, mesh, pins, edgeLength, options);
-    if (result.multimesh) {
-      built.multimesh = std::move(result.multimesh);
-      built.boundary = comeshBoundary(boundary, mesh, pins, m);
-      built.report = std::move(result.report);
-      built.edgeLength = edgeLength;
-      built.attempts = attempt + 1;
-      built.multimesh->validate();
-      return built;
-    }
-    if (correspondence == OutlineCorrespondence::kArtwork) {
-      built.fallback = "correspondence \"artwork\" folded key " + inQuotes(scene.keys[result.failedKey].name) + " near " +
-                       formatPoint(result.failedAt) + " at edge length " + formatLength(edgeLength) +
-                       " px; built with \"outline\" (arc length) instead";
-      correspondence = OutlineCorrespondence::kOutline;
-      --attempt;  // the same edge length, by arc length
-      continue;
-    }
-    const bool finerFits = withinMeshLimit(scene, built.outlines[scene.reference], edgeLength / 1.5);
-    if (attempt >= options.refinements || !finerFits)
-      throw InputError(file + ": key " + inQuotes(scene.keys[result.failedKey].name) +
-                       ": cannot map the mesh onto this key without folding triangles near " + formatPoint(result.failedAt) +
-                       " (tried edge lengths down to " + formatLength(edgeLength) +
-                       " px" + (finerFits ? "" : ": a finer one would pass max_vertices") + "); check that its features, interior features and cuts match the other keys there");
-    built.failedAttempts.push_back("at " + formatLength(edgeLength) + " px, key " + inQuotes(scene.keys[result.failedKey].name) +
-                                   " folded near " + formatPoint(result.failedAt));
-    edgeLength /= 1.5;
+    fallbacks.push_back("corners " + choiceName("corners", int(corners)) + " folded " + failure +
+                        " at edge lengths down to " + formatLength(edgeLength) + " px");
   }
+  std::string tried;
+  for (CornerHandling corners : cornerChain) tried += (tried.empty() ? "" : ", ") + choiceName("corners", int(corners));
+  throw InputError(file + ": key " + failedKey + ": cannot map the mesh onto this key without folding triangles near " +
+                   failure.substr(failure.find(" near ") + 6) + " (tried corners " + tried +
+                   (scene.correspondence == OutlineCorrespondence::kArtwork ? ", correspondence \"artwork\" and \"outline\"" : "") +
+                   ", edge lengths down to " + formatLength(edgeLength) + " px" +
+                   (finerFits ? "" : ": a finer one would pass max_vertices") +
+                   "); check that its features, interior features and cuts match the other keys there");
 }
 
 }  // namespace ib

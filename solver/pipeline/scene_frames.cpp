@@ -19,6 +19,9 @@ SceneFrameSetup sceneFrameSetup(const Scene& scene, const Multimesh& mesh, const
   setup.timeline = scene.timeline;
   setup.interpolation = scene.interpolation;
   setup.interpolation.cohesive.perTerm = cutReleases(scene, mesh);
+  // Correspondence from the artwork places the shape by what stays still (interpolation_params.h).
+  setup.interpolation.placement =
+      scene.correspondence == OutlineCorrespondence::kArtwork ? Placement::kStill : Placement::kBlend;
   setup.dynamics = scene.dynamics;
   if (!options.dynamics) setup.dynamics.epsilon = 0;
   setup.stiffness = mesh.stiffnesses() * options.kappaScale;
