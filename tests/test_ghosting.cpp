@@ -48,3 +48,15 @@ TEST_CASE("ghosting: an inbetween carrying the artwork 3 px aside ghosts where i
   drawn.opaqueOnly = true;
   CHECK(agreement(keys, drawn).count < mask.count);
 }
+
+TEST_CASE("ghosting: a stripe cross-faded from two places has twice the edges inside the shape; the silhouette counts none") {
+  const RgbaImage one = drawing(20), other = drawing(30);
+  // The stripe's top and bottom rows, from x = 14 to 49 (4 px in from the paper on either side).
+  CHECK(render::edgePixels(one) == 2 * 36);
+  // No detail: the square alone has its silhouette, 4 px from the paper, and nothing else.
+  CHECK(render::edgePixels(drawing(100)) == 0);
+  // The two keys blended half and half: two stripes at half strength, each with its two edges.
+  RgbaImage blend = one;
+  for (size_t i = 0; i < blend.pixels.size(); ++i) blend.pixels[i] = static_cast<uint8_t>((one.pixels[i] + other.pixels[i]) / 2);
+  CHECK(render::edgePixels(blend) == 4 * 36);
+}

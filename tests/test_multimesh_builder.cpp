@@ -164,4 +164,12 @@ TEST_CASE("multimesh builder: a key that stays folded is named with the place an
                         Catch::Contains("tried corners \"vertices\", \"paired\", \"off\"") &&
                         Catch::Contains("edge lengths down to 4"));
   CHECK(attempts == 6);  // two edge lengths for each of the three corner settings
+  // Under "artwork" each edge length also tries the artwork (and it without shape knots near the
+  // fold, twice) before arc length; the error names both correspondences.
+  Scene artwork = scene;
+  artwork.correspondence = OutlineCorrespondence::kArtwork;
+  attempts = 0;
+  CHECK_THROWS_WITH(buildMultimesh(artwork, options),
+                    Catch::Contains("tried corners \"vertices\", \"paired\", \"off\", correspondence \"artwork\" and \"outline\""));
+  CHECK(attempts == 24);  // 3 corner settings x 2 edge lengths x (3 artwork + 1 arc length)
 }

@@ -27,4 +27,30 @@ Ghosting ghosting(const RgbaImage& frame, const RgbaImage& drawing, const Agreem
   return g;
 }
 
+int edgePixels(const RgbaImage& image, int threshold, int margin) {
+  const int w = image.width, h = image.height;
+  // Paper (alpha under 128) grown by `margin` in x, then in y: a square of side 2 margin + 1.
+  std::vector<char> paper(static_cast<size_t>(w) * h), grown(paper.size(), 0);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) paper[static_cast<size_t>(y) * w + x] = pixel(image, x, y)[3] < 128;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      for (int d = -margin; d <= margin && !grown[static_cast<size_t>(y) * w + x]; ++d)
+        grown[static_cast<size_t>(y) * w + x] = x + d >= 0 && x + d < w && paper[static_cast<size_t>(y) * w + x + d];
+  paper = grown;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      for (int d = -margin; d <= margin && !grown[static_cast<size_t>(y) * w + x]; ++d)
+        grown[static_cast<size_t>(y) * w + x] = y + d >= 0 && y + d < h && paper[static_cast<size_t>(y + d) * w + x];
+  int count = 0;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      if (grown[static_cast<size_t>(y) * w + x]) continue;
+      const bool right = x + 1 < w && pixelDifference(pixel(image, x, y), pixel(image, x + 1, y)) > threshold;
+      const bool down = y + 1 < h && pixelDifference(pixel(image, x, y), pixel(image, x, y + 1)) > threshold;
+      count += right || down;
+    }
+  return count;
+}
+
 }  // namespace ib::render

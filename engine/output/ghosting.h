@@ -22,4 +22,11 @@ struct Ghosting {
 // (so a pixel transparent in both is equal whatever its colour). `threshold` /255, default 48.
 Ghosting ghosting(const RgbaImage& frame, const RgbaImage& drawing, const AgreementMask& mask, int threshold = 48);
 
+// The pixels of `image` on an edge of the artwork inside its shape: whose right or lower neighbour
+// differs by more than `threshold` /255 in a premultiplied RGBA channel, `margin` px or more (in x
+// and in y) from the paper (alpha under 128), so that the silhouette and its ink line, whose length
+// follows the shape, do not count. Detail cross-faded from two places (a stripe doubled) has more
+// such edges than the keys it is blended from.
+int edgePixels(const RgbaImage& image, int threshold = 48, int margin = 4);
+
 }  // namespace ib::render

@@ -1,6 +1,7 @@
 #include "meshing/interior_pins.h"
 
 #include "meshing/artwork_agreement.h"
+#include "meshing/artwork_regions.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,8 +12,8 @@ namespace ib {
 // (by name: every key places the same), then round each one with a radius r a ring of
 // max(6, ceil(2 pi r / e)) points at distance r, e the edge length. Each ring point sits at the same
 // offset from its feature in every key, so the disc's triangles are translated copies of each
-// other in every key and the detail drawn there moves as one piece.
-std::vector<Eigen::Vector2d> interiorPoints(const Scene& scene, int k, double edgeLength) {
+// other in every key and the detail drawn there moves as one piece. Then regions[k], if any.
+std::vector<Eigen::Vector2d> interiorPoints(const Scene& scene, int k, double edgeLength, const KeyPoints& regions) {
   const KeySpec& key = scene.keys[k];
   std::vector<Eigen::Vector2d> out;
   for (const auto& [name, p] : key.interiorFeatures) out.push_back(p);
@@ -23,12 +24,16 @@ std::vector<Eigen::Vector2d> interiorPoints(const Scene& scene, int k, double ed
       out.push_back(key.interiorFeatures.at(name) + r * Eigen::Vector2d(std::cos(angle), std::sin(angle)));
     }
   }
+  if (!regions.empty()) out.insert(out.end(), regions[static_cast<size_t>(k)].begin(), regions[static_cast<size_t>(k)].end());
   return out;
 }
 
-InteriorPins interiorPins(const Scene& scene, const ReferenceMesh& mesh, double edgeLength) {
+InteriorPins interiorPins(const Scene& scene, const ReferenceMesh& mesh, double edgeLength, const KeyPoints& regions) {
+  // mesh.interior holds interiorPoints' vertices: the features and rings, then the regions' pins.
+  const size_t regionCount = regions.empty() ? 0 : regions[0].size();
+  const size_t featureCount = mesh.interior.size() - regionCount;
   InteriorPins pins;
-  pins.vertices = mesh.interior;
+  pins.vertices.assign(mesh.interior.begin(), mesh.interior.begin() + static_cast<std::ptrdiff_t>(featureCount));
   for (int k = 0; k < static_cast<int>(scene.keys.size()); ++k) pins.targets.push_back(interiorPoints(scene, k, edgeLength));
   std::vector<char> pinned(mesh.points.size(), 0);
   for (int v : mesh.interior) pinned[v] = 1;
@@ -44,6 +49,12 @@ InteriorPins interiorPins(const Scene& scene, const ReferenceMesh& mesh, double 
     }
   }
   pins.features = pins.vertices.size();
+  // The regions' pins after the features: placed in the initial map, moved by Comesh like the
+  // anchors (kept there, they left slivers on five bundled scenes).
+  for (size_t p = 0; p < regionCount; ++p) {
+    pins.vertices.push_back(mesh.interior[featureCount + p]);
+    for (size_t k = 0; k < scene.keys.size(); ++k) pins.targets[k].push_back(regions[k][p]);
+  }
   return pins;
 }
 
@@ -72,6 +83,28 @@ std::vector<int> deepAnchors(const ReferenceMesh& mesh, const InteriorPins& pins
   std::vector<int> out;
   for (size_t v = 0; v < n; ++v)
     if (deep[v]) out.push_back(static_cast<int>(v));
+  return out;
+}
+
+KeyPoints regionPins(const Scene& scene, const std::vector<RgbaImage>& drawings, double edgeLength,
+                     const std::vector<Eigen::Vector2d>& clearOf, double clearance) {
+  KeyPoints pins = artworkRegionPins(drawings, scene.reference, kRegionClearance * edgeLength);
+  // None near an interior feature or its disc (within the clearance of its rim), nor near a fold.
+  const KeySpec& reference = scene.keys[scene.reference];
+  std::vector<char> keep(pins.empty() ? 0 : pins[0].size(), 1);
+  for (size_t p = 0; p < keep.size(); ++p) {
+    for (const auto& [name, at] : reference.interiorFeatures) {
+      const auto radius = reference.interiorRadii.find(name);
+      const double r = radius == reference.interiorRadii.end() ? 0.0 : radius->second;
+      keep[p] = keep[p] && (pins[static_cast<size_t>(scene.reference)][p] - at).norm() >= r + kRegionClearance * edgeLength;
+    }
+    for (const std::vector<Eigen::Vector2d>& inKey : pins)
+      for (const Eigen::Vector2d& fold : clearOf) keep[p] = keep[p] && (inKey[p] - fold).norm() >= clearance;
+  }
+  KeyPoints out(pins.size());
+  for (size_t k = 0; k < pins.size(); ++k)
+    for (size_t p = 0; p < keep.size(); ++p)
+      if (keep[p]) out[k].push_back(pins[k][p]);
   return out;
 }
 

@@ -27,6 +27,12 @@ namespace ib {
 
 namespace {
 
+// How often a key that folds under "artwork" is tried again with the outlines matched by arc
+// length near the folds (no shape knots there) and no region pins there, before arc length
+// everywhere.
+constexpr size_t kShapeKnotRetries = 2;
+constexpr double kFoldClearance = 3;  // edge lengths: no shape knots this near a fold on those tries
+
 // A choice's word from the parameter table, quoted: `"paired"`.
 std::string choiceName(const std::string& parameterName, int value) {
   return inQuotes(formatParameterValue(parameter(parameterName), value));
@@ -305,7 +311,9 @@ BuiltScene buildMultimesh(const Scene& scene, const MultimeshBuildOptions& optio
   // What is tried until a setting maps every key without folds (BuiltScene::fallback): the scene's
   // corners, then those that hold the correspondence less ("vertices", "paired", "off"), each from
   // the first edge length down to options.refinements finer ones; at every edge length, a key
-  // that folds under "artwork" is tried again by arc length before the edge length is refined.
+  // that folds under "artwork" is tried again matched by arc length and without region pins near
+  // the folds (kShapeKnotRetries times), then by arc length everywhere, and when that folds too (the fold is not the artwork's doing),
+  // the finer edge length tries "artwork" again.
   std::vector<CornerHandling> cornerChain = {scene.corners};
   if (scene.corners == CornerHandling::kVertices) cornerChain.push_back(CornerHandling::kPaired);
   if (scene.corners != CornerHandling::kOff) cornerChain.push_back(CornerHandling::kOff);
@@ -317,50 +325,69 @@ BuiltScene buildMultimesh(const Scene& scene, const MultimeshBuildOptions& optio
   for (CornerHandling corners : cornerChain) {
     edgeLength = firstEdgeLength;
     OutlineCorrespondence correspondence = scene.correspondence;
+    std::string artworkFolds;            // where "artwork" folded at this edge length, for the note
+    std::vector<Eigen::Vector2d> folds;  // those places: no shape knots or region pins near them
     for (int attempt = 0;; ++attempt) {
       SharedBoundaryOptions bo;
       bo.edgeLength = edgeLength;
       bo.corners = corners;
       bo.correspondence = correspondence;
+      bo.shapeKnotsClearOf = folds;
+      bo.shapeKnotClearance = kFoldClearance * edgeLength;
       const SharedBoundary boundary = matchBoundaries(scene, built.shapes, bo);
       if (options.progress)
         options.progress("meshing " + scene.keys[scene.reference].name + " (" +
                          estimatedSize(built.outlines[scene.reference], edgeLength) + ")", 0);
       ConformingMeshOptions mo;
       mo.maxEdgeLength = edgeLength;
+      const KeyPoints regions =
+          correspondence == OutlineCorrespondence::kArtwork
+              ? regionPins(scene, drawings, edgeLength, folds, kFoldClearance * edgeLength)
+              : KeyPoints{};
       ReferenceMesh mesh;
       try {
-        mesh = meshReference(boundary, scene.reference, mo, interiorPoints(scene, scene.reference, edgeLength));
+        mesh = meshReference(boundary, scene.reference, mo, interiorPoints(scene, scene.reference, edgeLength, regions));
       } catch (const InputError& e) {
         throw InputError(file + ": key " + inQuotes(scene.keys[scene.reference].name) + ": cannot mesh: " + e.what());
       }
-      InteriorPins pins = interiorPins(scene, mesh, edgeLength);
+      InteriorPins pins = interiorPins(scene, mesh, edgeLength, regions);
       if (correspondence == OutlineCorrespondence::kArtwork) anchorArtwork(drawings, mesh, edgeLength, pins);
       Attempt result = mapKeys(scene, boundary, mesh, pins, edgeLength, options);
       if (result.multimesh) {
+        if (!artworkFolds.empty())
+          fallbacks.push_back("correspondence \"artwork\" folded " + artworkFolds + " at edge length " + formatLength(edgeLength) +
+                              " px" + (correspondence == OutlineCorrespondence::kArtwork
+                                           ? "; built with the outlines matched by arc length and no region pinned within " +
+                                                 formatLength(kFoldClearance * edgeLength) + " px of each fold"
+                                           : ""));
         built.multimesh = std::move(result.multimesh);
         built.boundary = comeshBoundary(boundary, mesh, pins, m);
         built.report = std::move(result.report);
         built.edgeLength = edgeLength;
         built.attempts = static_cast<int>(built.failedAttempts.size()) + 1;
-        if (!fallbacks.empty())
-          built.fallback = joined(fallbacks) + "; built with corners " + choiceName("corners", int(corners)) +
-                           " and correspondence " + choiceName("correspondence", int(correspondence)) + " instead";
+        built.fallback = joined(fallbacks);
+        if (corners != scene.corners || correspondence != scene.correspondence)
+          built.fallback += "; built with corners " + choiceName("corners", int(corners)) + " and correspondence " +
+                            choiceName("correspondence", int(correspondence)) + " instead";
         built.multimesh->validate();
         return built;
       }
       failedKey = inQuotes(scene.keys[result.failedKey].name);
       failure = "key " + failedKey + " near " + formatPoint(result.failedAt);
+      if (correspondence == OutlineCorrespondence::kArtwork) {  // tried again at this edge length
+        artworkFolds += (artworkFolds.empty() ? "" : ", then ") + failure;
+        if (folds.size() < kShapeKnotRetries) folds.push_back(result.failedAt);  // arc length, no region pins near it
+        else correspondence = OutlineCorrespondence::kOutline;                  // by arc length everywhere
+        --attempt;
+        continue;
+      }
       built.failedAttempts.push_back("at " + formatLength(edgeLength) + " px, corners " + choiceName("corners", int(corners)) +
                                      ", correspondence " + choiceName("correspondence", int(correspondence)) + ", key " +
                                      failedKey + " folded near " + formatPoint(result.failedAt));
-      if (correspondence == OutlineCorrespondence::kArtwork) {
-        fallbacks.push_back("correspondence \"artwork\" folded " + failure + " at edge length " +
-                            formatLength(edgeLength) + " px");
-        correspondence = OutlineCorrespondence::kOutline;
-        --attempt;  // the same edge length, by arc length
-        continue;
-      }
+      // Arc length folds here too: not the artwork's doing, so a finer mesh tries it again.
+      artworkFolds.clear();
+      folds.clear();
+      correspondence = scene.correspondence;
       finerFits = withinMeshLimit(scene, built.outlines[scene.reference], edgeLength / 1.5);
       if (attempt >= options.refinements || !finerFits) break;
       edgeLength /= 1.5;

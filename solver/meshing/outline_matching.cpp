@@ -115,10 +115,14 @@ void placeShapeKnots(SharedBoundary& boundary, int reference, const SharedBounda
           const double x = r * (n - 1);
           const int i = std::min(static_cast<int>(x), n - 2);
           std::vector<double> knot(keys);
+          bool clear = true;  // of the places to keep knots away from
           for (int k = 0; k < keys; ++k) {
             const double along = k == reference ? r : matched[k][i] + (x - i) * (matched[k][i + 1] - matched[k][i]);
             knot[k] = from[k] + (to[k] - from[k]) * along;
+            const Eigen::Vector2d p = boundary.atFraction(k, static_cast<int>(a), knot[k]);
+            for (const Eigen::Vector2d& q : options.shapeKnotsClearOf) clear = clear && (p - q).norm() >= options.shapeKnotClearance;
           }
+          if (!clear) continue;
           fractions.push_back(std::move(knot));
           cornerIn.emplace_back(keys, 0);
         }

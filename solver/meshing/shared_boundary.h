@@ -53,6 +53,11 @@ struct SharedBoundaryOptions {
   // Between features and paired corners: arc length (the paper), or the outlines matched by shape
   // (outline_matching.h). Default outline.
   OutlineCorrespondence correspondence = OutlineCorrespondence::kOutline;
+  // With kArtwork: no shape knot within shapeKnotClearance px of these points (px, in any key),
+  // where a key folded before; the outlines there follow arc length between the knots around.
+  // Default none.
+  std::vector<Eigen::Vector2d> shapeKnotsClearOf = {};
+  double shapeKnotClearance = 0;  // px; default 0
 };
 
 struct SharedBoundary {

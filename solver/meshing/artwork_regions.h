@@ -1,0 +1,32 @@
+// Detail drawn inside the shapes that moved (../shared/correspondence.md): regions of flat colour
+// (a stripe, an eye, a patch) matched across keys by colour, size and place, and pinned so that
+// the map carries each onto itself in every key, as interior features do. Part of
+// "correspondence": "artwork" (docs/drawings-to-multimesh.md, "Correspondence from the artwork").
+#pragma once
+
+#include "core/png_image.h"
+
+#include <Eigen/Core>
+#include <vector>
+
+namespace ib {
+
+struct ArtworkRegionOptions {
+  int colourTolerance = 24;  // /255: largest channel difference from a region's first pixel. Default 24.
+  double minArea = 6;        // px^2: smaller regions are specks. Default 6.
+  double maxShare = 0.3;     // regions over this share of the drawn pixels are fills, not detail. Default 0.3.
+};
+
+// Points to pin, [key][pin] in drawing px: the centroid, in every key, of every region of the
+// reference key's drawing (fully opaque pixels of one colour, 4-connected, not touching the
+// transparent paper, its centroid on itself, not of the colour of the largest region, the fill,
+// whose pieces change shape with what is around them) that every other key has exactly once (the
+// same colour within twice the tolerance, area within a factor 2.5, centroid within 0.3 of the
+// shape's size; the second best at least 0.3 costlier), and that moved (centroid or area) in some
+// key. A centroid is kept when every key has it at least `clearance` px from transparent paper and
+// from every centroid kept before it. (The points at the ends of a region's axes as well, carried
+// by its moments, folded chick-squash's initial map near its feet; centroids alone do not.)
+std::vector<std::vector<Eigen::Vector2d>> artworkRegionPins(const std::vector<RgbaImage>& drawings, int reference,
+                                                            double clearance, const ArtworkRegionOptions& options = {});
+
+}  // namespace ib
