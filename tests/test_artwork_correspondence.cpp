@@ -162,7 +162,9 @@ TEST_CASE("correspondence fallback: a key that folds under every edge length all
   REQUIRE(built.multimesh);
   CHECK(built.fallback.find("corners \"vertices\" folded key \"stretch\" near (") != std::string::npos);
   CHECK(built.fallback.find("built with corners \"off\" and correspondence \"outline\" instead") != std::string::npos);
-  CHECK(built.failedAttempts.size() == 2);  // "vertices", then "paired"
+  CHECK(built.fallback.find("corners \"paired\" folded key \"stretch\" near (") != std::string::npos);
+  CHECK(built.failedAttempts.empty());  // "off" built at the first edge length: no refinement to skip
+  CHECK(built.attempts == 1);
   // What was used builds as the scene's own setting, with nothing tried before it.
   scene.corners = CornerHandling::kOff;
   const BuiltScene direct = buildMultimesh(scene, options);

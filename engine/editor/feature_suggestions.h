@@ -1,10 +1,12 @@
-// The editor's Suggest button: features proposed where every key's outline has a corner that
-// corresponds, on the outer loop of each key's first shape. Corners are found as the mesher finds
-// them (meshing/outline_corners.h); a reference key's corner pairs with another key's when each is
-// the other's cheapest match: same turning sign, cost = distance in the outlines' bounding boxes
-// (normalized to [0, 1]) plus half the turning difference over pi, at most 0.25. (Not the mesher's
-// pairing by arc fraction between features: with no features yet, and outlines of different
-// lengths, that pairs a square's corner with an arch's leg.) The user accepts or drops each. CPU only.
+// The editor's Suggest button. Once the keys carry features, what the shape matching pairs
+// between them (matchedSuggestions, meshing/matched_features.h). Before, features proposed where
+// every key's outline has a corner that corresponds, on the outer loop of each key's first shape:
+// corners are found as the mesher finds them (meshing/outline_corners.h); a reference key's
+// corner pairs with another key's when each is the other's cheapest match: same turning sign,
+// cost = distance in the outlines' bounding boxes (normalized to [0, 1]) plus half the turning
+// difference over pi, at most 0.25. (Not the mesher's pairing by arc fraction between features:
+// with no features yet, and outlines of different lengths, that pairs a square's corner with an
+// arch's leg.) The user accepts or drops each. CPU only.
 #pragma once
 
 #include "editor/editor_marks.h"

@@ -61,7 +61,9 @@ struct InterpolationParams {
   // blended by the weights (no shrinking or snapping under stretch; a departure from the paper),
   // or kPerKey, the paper's eq. 9. Default kShared (docs/solver.md, "Departures from the paper").
   ShapeMetric metric = ShapeMetric::kShared;
-  Placement placement = Placement::kBlend;  // set from the scene's correspondence (scene_frames.h)
+  // Default kBlend; sceneFrameSetup sets kStill for "correspondence": "artwork" (the scene's
+  // choice, also when its multimesh was built by arc length after a fold).
+  Placement placement = Placement::kBlend;
 };
 
 }  // namespace ib

@@ -78,11 +78,12 @@ void Interpolator::Impl::addGapPull(const Frame& frame, State& s) const {
   bool pulling = false;
   for (int p = 0; p < gapPull_->size() && !pulling; ++p) pulling = gapPull_->springConstant(p, frame.w) > 0;
   if (!pulling) return;
-  // Each group's angle from the frame's blend (Procrustes, as align: atan2(sum a x b, sum a . b)
-  // with a, b the group's centred positions in x and in the blend turns x onto the blend, so x
-  // stands turned by minus that). W_G's anchors turn with it: W_G is invariant under a turn of
-  // the group, and align's turn (by E_P alone) is a true minimization. Its gradient carries
-  // d W_G / d angle through d angle / d x_v = -(D (b_y, -b_x) - C b) / (C^2 + D^2).
+  // Each group's angle from the frame's blend (Procrustes, as align: atan2(sum m a x b, sum m a . b)
+  // with a, b the group's positions in x and in the blend, centred on their m-weighted centroids,
+  // m the placement weights, turns x onto the blend, so x stands turned by minus that). W_G's
+  // anchors turn with it: W_G is invariant under a turn of the group, and align's turn (by E_P
+  // alone) is a true minimization. Its gradient carries d W_G / d angle through
+  // d angle / d x_v = -m_v (D (b_y, -b_x) - C b) / (C^2 + D^2), C and D the two sums.
   const int groups = groups_.groupCount();
   const auto& start = groups_.memberStart();
   const auto& members = groups_.members();

@@ -54,8 +54,8 @@ class Interpolator::Impl {
   // The stiffness scale from the current kappa, and what is stated relative to it: the gradient
   // floor and the W_O penalty (constructor and setStiffness).
   void updateStiffnessScale();
-  GlobalMatrixSources matrixSources() const;
-  void updatePlacementWeights();  // placementWeight_ and placementTie_ for params_.placement  // what H is built from, with the current parameters
+  GlobalMatrixSources matrixSources() const;  // what H is built from, with the current parameters
+  void updatePlacementWeights();  // placementWeight_ and placementTie_ for params_.placement
   bool cancelled() const { return cancel_ && cancel_->load(std::memory_order_relaxed); }
   Frame makeFrame(const Eigen::VectorXd& w, const VertexSprings* springs) const;
   void evaluateState(const Frame& frame, State& state) const;

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace ib {
 
@@ -31,6 +32,7 @@ std::vector<Eigen::Vector2d> interiorPoints(const Scene& scene, int k, double ed
 InteriorPins interiorPins(const Scene& scene, const ReferenceMesh& mesh, double edgeLength, const KeyPoints& regions) {
   // mesh.interior holds interiorPoints' vertices: the features and rings, then the regions' pins.
   const size_t regionCount = regions.empty() ? 0 : regions[0].size();
+  if (mesh.interior.size() < regionCount) throw std::logic_error("interiorPins: the mesh lacks the regions' pins");
   const size_t featureCount = mesh.interior.size() - regionCount;
   InteriorPins pins;
   pins.vertices.assign(mesh.interior.begin(), mesh.interior.begin() + static_cast<std::ptrdiff_t>(featureCount));
@@ -67,13 +69,14 @@ void anchorArtwork(const std::vector<RgbaImage>& drawings, const ReferenceMesh& 
   for (int v : artworkAnchors(drawings, edgeLength, mesh.points, mesh.triangles, onBoundary, taken)) {
     pins.vertices.push_back(v);
     for (auto& targets : pins.targets) targets.push_back(mesh.points[v]);
+    ++pins.anchors;
   }
 }
 
 std::vector<int> deepAnchors(const ReferenceMesh& mesh, const InteriorPins& pins) {
   const size_t n = mesh.points.size();
   std::vector<char> deep(n, 0);
-  for (size_t p = pins.features; p < pins.vertices.size(); ++p) deep[pins.vertices[p]] = 1;
+  for (size_t p = pins.vertices.size() - pins.anchors; p < pins.vertices.size(); ++p) deep[pins.vertices[p]] = 1;
   for (int ring = 0; ring < kAnchorRings; ++ring) {  // strip the anchors next to a vertex that is not one
     const std::vector<char> before = deep;
     for (const auto& t : mesh.triangles)
@@ -86,10 +89,11 @@ std::vector<int> deepAnchors(const ReferenceMesh& mesh, const InteriorPins& pins
   return out;
 }
 
-KeyPoints regionPins(const Scene& scene, const std::vector<RgbaImage>& drawings, double edgeLength,
-                     const std::vector<Eigen::Vector2d>& clearOf, double clearance) {
+KeyPoints regionPins(const Scene& scene, const std::vector<RgbaImage>& drawings, const std::vector<KeyShape>& shapes,
+                     double edgeLength, const std::vector<Eigen::Vector2d>& clearOf, double clearance) {
   KeyPoints pins = artworkRegionPins(drawings, scene.reference, kRegionClearance * edgeLength);
-  // None near an interior feature or its disc (within the clearance of its rim), nor near a fold.
+  // None near an interior feature or its disc (within the clearance of its rim), a fold, an
+  // outline or a cut.
   const KeySpec& reference = scene.keys[scene.reference];
   std::vector<char> keep(pins.empty() ? 0 : pins[0].size(), 1);
   for (size_t p = 0; p < keep.size(); ++p) {
@@ -98,8 +102,11 @@ KeyPoints regionPins(const Scene& scene, const std::vector<RgbaImage>& drawings,
       const double r = radius == reference.interiorRadii.end() ? 0.0 : radius->second;
       keep[p] = keep[p] && (pins[static_cast<size_t>(scene.reference)][p] - at).norm() >= r + kRegionClearance * edgeLength;
     }
-    for (const std::vector<Eigen::Vector2d>& inKey : pins)
-      for (const Eigen::Vector2d& fold : clearOf) keep[p] = keep[p] && (inKey[p] - fold).norm() >= clearance;
+    for (size_t k = 0; k < pins.size(); ++k) {
+      for (const Eigen::Vector2d& fold : clearOf) keep[p] = keep[p] && (pins[k][p] - fold).norm() >= clearance;
+      // Clear of the outline and of the cuts, as interior features must be (checkInteriorFeatures).
+      keep[p] = keep[p] && distanceToLoops(shapes[k].loops, pins[k][p]).first >= kRegionClearance * edgeLength;
+    }
   }
   KeyPoints out(pins.size());
   for (size_t k = 0; k < pins.size(); ++k)

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "core/png_image.h"
+#include "meshing/key_shape.h"
 #include "meshing/reference_mesh.h"
 #include "scene/scene.h"
 
@@ -23,6 +24,7 @@ struct InteriorPins {
   std::vector<int> vertices;
   std::vector<std::vector<Eigen::Vector2d>> targets;  // [key][pin]
   size_t features = 0;  // the first `features` pins are interior features: Comesh keeps them
+  size_t anchors = 0;   // the last `anchors` pins are the artwork's anchors (deepAnchors)
 };
 
 using KeyPoints = std::vector<std::vector<Eigen::Vector2d>>;  // [key][point], px
@@ -34,13 +36,13 @@ std::vector<Eigen::Vector2d> interiorPoints(const Scene& scene, int k, double ed
 InteriorPins interiorPins(const Scene& scene, const ReferenceMesh& mesh, double edgeLength, const KeyPoints& regions = {});
 
 // With "correspondence": "artwork", the moved regions' pins (meshing/artwork_regions.h), at least
-// kRegionClearance edge lengths from the paper, from each other and from the interior features'
-// discs: pinned in every key's initial map like interior features, so a stripe or an eye that
+// kRegionClearance edge lengths from the paper, from each other, from every key's outline and cuts
+// (shapes: BuiltScene::shapes) and from the interior features' discs: pinned in every key's initial map like interior features, so a stripe or an eye that
 // moved is carried onto itself.
 constexpr double kRegionClearance = 1.5;
 // None within `clearance` px of a point of clearOf (px, in any key: where a key folded before).
-KeyPoints regionPins(const Scene& scene, const std::vector<RgbaImage>& drawings, double edgeLength,
-                     const std::vector<Eigen::Vector2d>& clearOf = {}, double clearance = 0);
+KeyPoints regionPins(const Scene& scene, const std::vector<RgbaImage>& drawings, const std::vector<KeyShape>& shapes,
+                     double edgeLength, const std::vector<Eigen::Vector2d>& clearOf = {}, double clearance = 0);
 // Adds the artwork's anchors (meshing/artwork_agreement.h: artworkAnchors) to pins, each held where
 // the reference key has it, in every key: what did not change in the drawings does not move.
 void anchorArtwork(const std::vector<RgbaImage>& drawings, const ReferenceMesh& mesh, double edgeLength, InteriorPins& pins);

@@ -257,7 +257,9 @@ class CutApplier {
   double snapDistance_;
 };
 
-// Distance from p to the nearest point of any loop (px), and that point.
+
+}  // namespace
+
 std::pair<double, Eigen::Vector2d> distanceToLoops(const std::vector<ShapeLoop>& loops, const Eigen::Vector2d& p) {
   std::pair<double, Eigen::Vector2d> best{std::numeric_limits<double>::infinity(), p};
   for (const ShapeLoop& loop : loops)
@@ -269,8 +271,6 @@ std::pair<double, Eigen::Vector2d> distanceToLoops(const std::vector<ShapeLoop>&
     }
   return best;
 }
-
-}  // namespace
 
 void checkInteriorFeatures(const Scene& scene, int key, const std::vector<Outline>& outlines, const KeyShape& shape,
                            double margin) {

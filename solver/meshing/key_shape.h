@@ -7,6 +7,7 @@
 #include "scene/scene.h"
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace ib {
@@ -45,6 +46,9 @@ struct KeyShapeOptions {
 // far from the outline, two features on one point, a cut that leaves the shape or crosses itself.
 KeyShape buildKeyShape(const Scene& scene, int key, const std::vector<Outline>& outlines,
                        const KeyShapeOptions& options);
+
+// Distance from p to the nearest point of any of `loops` (outlines and cut sides, px), and that point.
+std::pair<double, Eigen::Vector2d> distanceToLoops(const std::vector<ShapeLoop>& loops, const Eigen::Vector2d& p);
 
 // Checks key `key`'s interior features against its traced drawing and shape (after cuts): each
 // must lie inside the shape (not in a hole, not outside), at least `margin` px from every loop

@@ -63,6 +63,10 @@ std::vector<MatchedFeature> matchedFeatures(const Scene& scene, const std::vecto
       for (int k = 0; k < keys; ++k) {
         if (k == reference) continue;
         const int hk = samplesIn(options.window, boundary.arcLength(k, arc), n);
+        if (2 * hk >= n - 1) {  // the key's arc is too short to turn within the window: no match there
+          s.confidence = 0;
+          break;
+        }
         const int j0 = static_cast<int>(std::lround(matched[k][i] * (n - 1)));
         const int reach = std::max(hk, n / 6);
         int best = std::clamp(j0, hk, n - 1 - hk);

@@ -310,10 +310,10 @@ BuiltScene buildMultimesh(const Scene& scene, const MultimeshBuildOptions& optio
   for (int k = 0; k < m; ++k) checkInteriorFeatures(scene, k, built.outlines[k], built.shapes[k], edgeLength);
   // What is tried until a setting maps every key without folds (BuiltScene::fallback): the scene's
   // corners, then those that hold the correspondence less ("vertices", "paired", "off"), each from
-  // the first edge length down to options.refinements finer ones; at every edge length, a key
-  // that folds under "artwork" is tried again matched by arc length and without region pins near
-  // the folds (kShapeKnotRetries times), then by arc length everywhere, and when that folds too (the fold is not the artwork's doing),
-  // the finer edge length tries "artwork" again.
+  // the first edge length down to options.refinements finer ones. At every edge length a key that
+  // folds under "artwork" is tried again without shape knots or region pins near the folds
+  // (kShapeKnotRetries times), then by arc length; if that folds too, the fold is not the
+  // artwork's doing, and the finer edge length tries "artwork" again.
   std::vector<CornerHandling> cornerChain = {scene.corners};
   if (scene.corners == CornerHandling::kVertices) cornerChain.push_back(CornerHandling::kPaired);
   if (scene.corners != CornerHandling::kOff) cornerChain.push_back(CornerHandling::kOff);
@@ -321,9 +321,11 @@ BuiltScene buildMultimesh(const Scene& scene, const MultimeshBuildOptions& optio
   std::vector<std::string> fallbacks;  // what folded, one entry per setting given up
   std::string failure;                 // the last fold: `key "k" near (x, y)`
   std::string failedKey;               // that key's name, quoted
+  Eigen::Vector2d failedAt(0, 0);      // and the place, px
   bool finerFits = true;
   for (CornerHandling corners : cornerChain) {
     edgeLength = firstEdgeLength;
+    built.failedAttempts.clear();  // the refinements of the corners that build; the fallback note tells the rest
     OutlineCorrespondence correspondence = scene.correspondence;
     std::string artworkFolds;            // where "artwork" folded at this edge length, for the note
     std::vector<Eigen::Vector2d> folds;  // those places: no shape knots or region pins near them
@@ -342,7 +344,7 @@ BuiltScene buildMultimesh(const Scene& scene, const MultimeshBuildOptions& optio
       mo.maxEdgeLength = edgeLength;
       const KeyPoints regions =
           correspondence == OutlineCorrespondence::kArtwork
-              ? regionPins(scene, drawings, edgeLength, folds, kFoldClearance * edgeLength)
+              ? regionPins(scene, drawings, built.shapes, edgeLength, folds, kFoldClearance * edgeLength)
               : KeyPoints{};
       ReferenceMesh mesh;
       try {
@@ -357,14 +359,14 @@ BuiltScene buildMultimesh(const Scene& scene, const MultimeshBuildOptions& optio
         if (!artworkFolds.empty())
           fallbacks.push_back("correspondence \"artwork\" folded " + artworkFolds + " at edge length " + formatLength(edgeLength) +
                               " px" + (correspondence == OutlineCorrespondence::kArtwork
-                                           ? "; built with the outlines matched by arc length and no region pinned within " +
+                                           ? "; built with no shape knot or region pin within " +
                                                  formatLength(kFoldClearance * edgeLength) + " px of each fold"
                                            : ""));
         built.multimesh = std::move(result.multimesh);
         built.boundary = comeshBoundary(boundary, mesh, pins, m);
         built.report = std::move(result.report);
         built.edgeLength = edgeLength;
-        built.attempts = static_cast<int>(built.failedAttempts.size()) + 1;
+        built.attempts = attempt + 1;
         built.fallback = joined(fallbacks);
         if (corners != scene.corners || correspondence != scene.correspondence)
           built.fallback += "; built with corners " + choiceName("corners", int(corners)) + " and correspondence " +
@@ -373,7 +375,8 @@ BuiltScene buildMultimesh(const Scene& scene, const MultimeshBuildOptions& optio
         return built;
       }
       failedKey = inQuotes(scene.keys[result.failedKey].name);
-      failure = "key " + failedKey + " near " + formatPoint(result.failedAt);
+      failedAt = result.failedAt;
+      failure = "key " + failedKey + " near " + formatPoint(failedAt);
       if (correspondence == OutlineCorrespondence::kArtwork) {  // tried again at this edge length
         artworkFolds += (artworkFolds.empty() ? "" : ", then ") + failure;
         if (folds.size() < kShapeKnotRetries) folds.push_back(result.failedAt);  // arc length, no region pins near it
@@ -383,7 +386,8 @@ BuiltScene buildMultimesh(const Scene& scene, const MultimeshBuildOptions& optio
       }
       built.failedAttempts.push_back("at " + formatLength(edgeLength) + " px, corners " + choiceName("corners", int(corners)) +
                                      ", correspondence " + choiceName("correspondence", int(correspondence)) + ", key " +
-                                     failedKey + " folded near " + formatPoint(result.failedAt));
+                                     failedKey + " folded near " + formatPoint(failedAt) +
+                                     (artworkFolds.empty() ? "" : " (under \"artwork\" " + artworkFolds + ")"));
       // Arc length folds here too: not the artwork's doing, so a finer mesh tries it again.
       artworkFolds.clear();
       folds.clear();
@@ -398,7 +402,7 @@ BuiltScene buildMultimesh(const Scene& scene, const MultimeshBuildOptions& optio
   std::string tried;
   for (CornerHandling corners : cornerChain) tried += (tried.empty() ? "" : ", ") + choiceName("corners", int(corners));
   throw InputError(file + ": key " + failedKey + ": cannot map the mesh onto this key without folding triangles near " +
-                   failure.substr(failure.find(" near ") + 6) + " (tried corners " + tried +
+                   formatPoint(failedAt) + " (tried corners " + tried +
                    (scene.correspondence == OutlineCorrespondence::kArtwork ? ", correspondence \"artwork\" and \"outline\"" : "") +
                    ", edge lengths down to " + formatLength(edgeLength) + " px" +
                    (finerFits ? "" : ": a finer one would pass max_vertices") +

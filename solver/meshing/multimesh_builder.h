@@ -55,11 +55,12 @@ struct BuiltScene {
   ComeshBoundary boundary;                     // the multimesh's boundary vertices on the keys' outlines
   std::vector<KeyReport> report;               // [key]
   double edgeLength = 0;                       // px: the edge length finally used
-  int attempts = 0;                            // meshing attempts made (1 = no refinement needed)
-  // Each failed attempt before the one that worked, e.g. `at 6 px, key "full" folded near (312.0, 140.0)`.
+  int attempts = 0;                            // edge lengths tried with the corners that built (1 = no refinement needed)
+  // Each coarser edge length that folded with the corners that built, e.g. `at 6 px, corners
+  // "vertices", correspondence "outline", key "full" folded near (312.0, 140.0)`.
   std::vector<std::string> failedAttempts;
-  // When the scene's "correspondence" could not be mapped and another was used: what failed and
-  // what was used instead; empty otherwise.
+  // When the scene's corners or correspondence folded and the build got past it: what folded and
+  // what was used instead (other corners, arc length, or no shape knots near a fold); empty otherwise.
   std::string fallback;
 };
 
