@@ -103,15 +103,15 @@ TEST_CASE("correspondence artwork: chick-squash's eye and stripe, which move wit
   CHECK(artworkRegionPins(catDrawings, cat.reference, 12.0)[0].empty());
 }
 
-TEST_CASE("correspondence artwork: chick-squash builds at its first edge length without a note, where arc length folds and "
-          "refines") {
-  const BuiltScene built = buildMultimesh(correspondenceScene("chick-squash", OutlineCorrespondence::kArtwork), MultimeshBuildOptions{});
-  REQUIRE(built.multimesh);
-  CHECK(built.fallback.empty());
-  CHECK(built.failedAttempts.empty());
-  const BuiltScene byArcLength = buildMultimesh(correspondenceScene("chick-squash", OutlineCorrespondence::kOutline), MultimeshBuildOptions{});
-  CHECK(built.edgeLength > byArcLength.edgeLength);
-  CHECK(!byArcLength.failedAttempts.empty());
+TEST_CASE("correspondence artwork: chick-squash builds at its first edge length without a note under either "
+          "correspondence (its squash matched as drawn: test_squash_correspondence.cpp)") {
+  for (const OutlineCorrespondence correspondence : {OutlineCorrespondence::kArtwork, OutlineCorrespondence::kOutline}) {
+    const BuiltScene built = buildMultimesh(correspondenceScene("chick-squash", correspondence), MultimeshBuildOptions{});
+    REQUIRE(built.multimesh);
+    CHECK(built.fallback.empty());
+    CHECK(built.failedAttempts.empty());
+    CHECK(built.attempts == 1);
+  }
 }
 
 namespace {
@@ -155,14 +155,15 @@ TEST_CASE("correspondence artwork: the cat's body, drawn the same in every key, 
 
 TEST_CASE("correspondence fallback: a key that folds under every edge length allowed is built with the corners that hold "
           "the outline less, and the note names what folded and what was used") {
-  Scene scene = correspondenceScene("chick-squash", OutlineCorrespondence::kOutline);
+  Scene scene = loadScene((std::filesystem::path(INBETWEEN_SOURCE_DIR) / "assets" / "continental-drift" / "scene.json").string());
   MultimeshBuildOptions options;
-  options.refinements = 0;  // the first edge length only: corners "vertices" fold there
+  options.refinements = 0;                // the first edge length only
+  options.untangle.outerIterations = 0;  // Tutte's map alone: with the corners held, key "today" folds
   const BuiltScene built = buildMultimesh(scene, options);
   REQUIRE(built.multimesh);
-  CHECK(built.fallback.find("corners \"vertices\" folded key \"stretch\" near (") != std::string::npos);
+  CHECK(built.fallback.find("corners \"vertices\" folded key \"today\" near (") != std::string::npos);
+  CHECK(built.fallback.find("corners \"paired\" folded key \"today\" near (") != std::string::npos);
   CHECK(built.fallback.find("built with corners \"off\" and correspondence \"outline\" instead") != std::string::npos);
-  CHECK(built.fallback.find("corners \"paired\" folded key \"stretch\" near (") != std::string::npos);
   CHECK(built.failedAttempts.empty());  // "off" built at the first edge length: no refinement to skip
   CHECK(built.attempts == 1);
   // What was used builds as the scene's own setting, with nothing tried before it.
@@ -195,14 +196,15 @@ double mirrorAsymmetry(const Scene& scene) {
 }  // namespace
 
 TEST_CASE("correspondence: two mirrored keys give a mirror-symmetric middle inbetween whichever key is the reference "
-          "(silhouette and its mirror image differ by under 1% of its area by arc length, 1.5% from the artwork)") {
-  // Measured (silhouettes at 1 drawing px): "outline" 0.19% and 0.17% with key 0 or key 1 the
-  // reference; "artwork" 1.14% and 0.45% (the correspondence issue asks for 1%: not met).
+          "(silhouette and its mirror image differ by under 1% of its area, by arc length and from the artwork)") {
+  // Measured (silhouettes at 1 drawing px): "outline" 0.27% with key 0 or key 1 the reference;
+  // "artwork" 0.46% and 0.17%. Before the loops. start was fitted by an affine map (a rigid
+  // fit), "artwork" gave 1.14% and 0.45%.
   for (const OutlineCorrespondence correspondence : {OutlineCorrespondence::kOutline, OutlineCorrespondence::kArtwork})
     for (int reference = 0; reference < 2; ++reference) {
       Scene scene = correspondenceScene("lean-mirror", correspondence);
       scene.reference = reference;
       INFO("correspondence " << int(correspondence) << ", reference key " << reference);
-      CHECK(mirrorAsymmetry(scene) < (correspondence == OutlineCorrespondence::kOutline ? 0.01 : 0.015));
+      CHECK(mirrorAsymmetry(scene) < 0.01);
     }
 }

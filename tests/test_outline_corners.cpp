@@ -124,6 +124,20 @@ TEST_CASE("corners: pairing keeps the order and sign of corners, one missing fro
   CHECK(none.empty());
 }
 
+TEST_CASE("corners: two corners at the same place along the arc but far apart in the plane (after the squash is undone) "
+          "do not pair; near each other they do") {
+  CornerMatchOptions paired;
+  paired.unpaired = false;
+  // A 200 px arc; the key's corner 2% further along, turning alike: by fraction alone a pair.
+  const ArcCorner beak{0.50, 1.0, Eigen::Vector2d(75, 54)};
+  const ArcCorner foot{0.52, 1.0, Eigen::Vector2d(75, 118)};  // 64 px away: 0.32 of the arc, more than two unpaired
+  CHECK(cornerKnots({{beak}, {foot}}, {200, 200}, 0, paired).empty());
+  const ArcCorner near{0.52, 1.0, Eigen::Vector2d(76, 55)};
+  CHECK(cornerKnots({{beak}, {near}}, {200, 200}, 0, paired).size() == 1);
+  // Without places (NaN) the fraction and the turning decide, as before.
+  CHECK(cornerKnots({{{0.50, 1.0}}, {{0.52, 1.0}}}, {200, 200}, 0, paired).size() == 1);
+}
+
 TEST_CASE("corners: with \"vertices\", an unpaired corner is a knot held in its own key only, carried to the others") {
   const std::vector<std::vector<ArcCorner>> corners = {{{0.5, -1.0}}, {{0.5, -1.0}, {0.8, 1.0}}};
   CornerMatchOptions options;

@@ -79,13 +79,16 @@ namespace {
 
 // For each corner of `a`, the index of its partner in `b`, or -1: the order-preserving pairing
 // of same-signed corners with the least cost (Needleman-Wunsch).
-std::vector<int> pairCorners(const std::vector<ArcCorner>& a, const std::vector<ArcCorner>& b,
+// `length`: px, a's arc length, the unit of the places' distance.
+std::vector<int> pairCorners(const std::vector<ArcCorner>& a, const std::vector<ArcCorner>& b, double length,
                              const CornerMatchOptions& options) {
   const size_t n = a.size(), m = b.size();
   const double inf = std::numeric_limits<double>::infinity(), skip = options.unpairedCost;
   const auto pairCost = [&](size_t i, size_t j) {
     if (a[i].turn * b[j].turn <= 0) return inf;
-    return std::abs(a[i].fraction - b[j].fraction) + 0.5 * std::abs(a[i].turn - b[j].turn) / M_PI;
+    const double apart = (a[i].place - b[j].place).norm();
+    return std::abs(a[i].fraction - b[j].fraction) + 0.5 * std::abs(a[i].turn - b[j].turn) / M_PI +
+           (std::isfinite(apart) && length > 0 ? apart / length : 0);
   };
   std::vector<std::vector<double>> cost(n + 1, std::vector<double>(m + 1, 0));
   for (size_t i = 0; i <= n; ++i)
@@ -149,7 +152,7 @@ std::vector<CornerKnot> cornerKnots(const std::vector<std::vector<ArcCorner>>& c
   std::vector<std::vector<int>> partner(keys);  // [key][reference corner]
   for (int k = 0; k < keys; ++k) {
     if (k == reference) continue;
-    partner[k] = pairCorners(ref, corners[k], options);
+    partner[k] = pairCorners(ref, corners[k], lengths[reference], options);
   }
   std::vector<CornerKnot> knots;
   std::vector<std::vector<char>> used(keys);

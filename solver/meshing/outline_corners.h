@@ -5,6 +5,9 @@
 
 #include "core/plane_geometry.h"
 
+#include <Eigen/Core>
+#include <limits>
+
 #include <vector>
 
 namespace ib {
@@ -32,12 +35,17 @@ std::vector<OutlineCorner> outlineCorners(const ArcLengthLoop& loop, const Outli
 struct ArcCorner {
   double fraction = 0;  // of the arc's length in that key, in (0, 1)
   double turn = 0;      // radians, > 0 convex
+  // px: the corner in the reference key's frame, through the least-squares affine map of the
+  // key's loop onto the reference's (a squash or a stretch undone). NaN: not known, or the key is
+  // no such map of the reference (a wing that flaps); corners then pair by fraction and turning.
+  Eigen::Vector2d place = Eigen::Vector2d::Constant(std::numeric_limits<double>::quiet_NaN());
 };
 
 struct CornerMatchOptions {
   // Cost of leaving a corner unpaired, against pairing cost |fraction difference| + half the
-  // turning difference over pi (same-signed corners only). Default 0.15: corners pair when they
-  // lie within about 30% of the arc of each other and turn alike.
+  // turning difference over pi + their distance (ArcCorner) over the reference's arc length
+  // (same-signed corners only). Default 0.15: corners pair when they lie within about 30% of the
+  // arc of each other, about as far in the plane, and turn alike.
   double unpairedCost = 0.15;
   // px: least arc length between consecutive knots in every key. Default 1.
   double minimumGap = 1;

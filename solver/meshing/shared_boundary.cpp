@@ -94,18 +94,28 @@ std::string extraLoops(const std::string& more, const std::string& fewer, bool p
          " from the hole to the outline; if it should not be there, fill it in key " + inQuotes(more) + "'s drawing";
 }
 
-// Arc length on `target` where a rigid motion of `source` sampled from its start fits best.
-// Near-ties (within 1% of the loops' spread; a circle fits any start) go to the smallest rotation,
-// so symmetric loops keep their orientation and nested loops start on the same side.
+// Arc length on `target` where a linear map (an affine one: with translation) of `source`
+// sampled from its start fits best. Near-ties (within 1% of the loops' spread) go to the map
+// with the smallest rotation (its polar part's angle): a circle fits any start and keeps its
+// orientation, nested loops start on the same side, and a squash or a stretch (a tall oval to a
+// wide one, which a rotation by 90 deg fits about as well as the stretch does) is matched as
+// drawn, not turned a quarter. Maps that mirror (negative determinant) are not taken.
 double alignedStart(const ArcLengthLoop& source, const ArcLengthLoop& target, int samples) {
   std::vector<Eigen::Vector2d> a(samples);
   Eigen::Vector2d ca = Eigen::Vector2d::Zero();
   for (int i = 0; i < samples; ++i) ca += a[i] = source.at(source.length() * i / samples);
   ca /= samples;
   double aa = 0;
-  for (auto& p : a) aa += (p -= ca).squaredNorm();
+  Eigen::Matrix2d S = Eigen::Matrix2d::Zero();  // sum of a a^T, 2x2
+  for (auto& p : a) {
+    p -= ca;
+    aa += p.squaredNorm();
+    S += p * p.transpose();
+  }
+  const Eigen::Matrix2d Sinv = S.determinant() > 1e-12 * aa * aa ? Eigen::Matrix2d(S.inverse()) : Eigen::Matrix2d::Zero();
   const int shifts = 4 * samples;
-  std::vector<double> cost(shifts), angle(shifts);
+  constexpr double kMirrored = std::numeric_limits<double>::infinity();
+  std::vector<double> cost(shifts, kMirrored), angle(shifts, 0);
   std::vector<Eigen::Vector2d> b(samples);
   double spread = aa;
   for (int s = 0; s < shifts; ++s) {
@@ -113,18 +123,21 @@ double alignedStart(const ArcLengthLoop& source, const ArcLengthLoop& target, in
     Eigen::Vector2d cb = Eigen::Vector2d::Zero();
     for (int i = 0; i < samples; ++i) cb += b[i] = target.at(start + target.length() * i / samples);
     cb /= samples;
-    double bb = 0, dot = 0, cross = 0;
+    double bb = 0;
+    Eigen::Matrix2d M = Eigen::Matrix2d::Zero();  // sum of b a^T, 2x2
     for (int i = 0; i < samples; ++i) {
       const Eigen::Vector2d q = b[i] - cb;
       bb += q.squaredNorm();
-      dot += a[i].dot(q);
-      cross += a[i].x() * q.y() - a[i].y() * q.x();
+      M += q * a[i].transpose();
     }
-    cost[s] = aa + bb - 2 * std::hypot(dot, cross);  // residual after the best rotation
-    angle[s] = std::abs(std::atan2(cross, dot));
     spread = aa + bb;
+    const Eigen::Matrix2d A = M * Sinv;  // the least-squares map a -> b
+    if (A.determinant() <= 0) continue;
+    cost[s] = bb - (A * M.transpose()).trace();  // residual after the best map
+    angle[s] = std::abs(std::atan2(A(1, 0) - A(0, 1), A(0, 0) + A(1, 1)));
   }
   const double lowest = *std::min_element(cost.begin(), cost.end());
+  if (lowest == kMirrored) return 0;  // a degenerate loop (a line): any start
   int best = 0;
   for (int s = 0; s < shifts; ++s)
     if (cost[s] <= lowest + 0.01 * spread && (cost[best] > lowest + 0.01 * spread || angle[s] < angle[best])) best = s;
