@@ -1,5 +1,6 @@
 #include "core/plane_geometry.h"
 
+#include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -52,6 +53,33 @@ Eigen::Vector2d meetingPoint(const Eigen::Vector2d& a, const Eigen::Vector2d& b,
     return a + std::clamp(t, 0.0, 1.0) * r;
   }
   return 0.5 * (a + closestParameter(a, b, c) * r + a + closestParameter(a, b, d) * r);
+}
+
+double AffineFit::rotation() const {
+  return std::abs(std::atan2(linear(1, 0) - linear(0, 1), linear(0, 0) + linear(1, 1)));
+}
+
+std::optional<AffineFit> affineFit(const Polyline& from, const Polyline& to) {
+  const size_t n = std::min(from.size(), to.size());
+  if (n == 0) return std::nullopt;
+  Eigen::Vector2d cf = Eigen::Vector2d::Zero(), ct = Eigen::Vector2d::Zero();
+  for (size_t i = 0; i < n; ++i) cf += from[i], ct += to[i];
+  cf /= static_cast<double>(n), ct /= static_cast<double>(n);
+  AffineFit fit;
+  Eigen::Matrix2d S = Eigen::Matrix2d::Zero(), M = Eigen::Matrix2d::Zero();  // sums of f f^T and t f^T, 2x2
+  for (size_t i = 0; i < n; ++i) {
+    const Eigen::Vector2d f = from[i] - cf, t = to[i] - ct;
+    fit.fromSpread += f.squaredNorm();
+    fit.toSpread += t.squaredNorm();
+    S += f * f.transpose();
+    M += t * f.transpose();
+  }
+  if (S.determinant() <= 1e-9 * fit.fromSpread * fit.fromSpread) return std::nullopt;  // a line
+  fit.linear = M * S.inverse();
+  fit.translation = ct - fit.linear * cf;
+  // sum |A f - t|^2 = toSpread - 2 tr(A M^T) + tr(A S A^T), and A S A^T = A M^T for A = M S^-1.
+  fit.residual = std::max(0.0, fit.toSpread - (fit.linear * M.transpose()).trace());
+  return fit;
 }
 
 int rayCrossings(const Polyline& loop, const Eigen::Vector2d& p) {

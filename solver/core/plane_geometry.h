@@ -3,6 +3,7 @@
 
 #include <Eigen/Core>
 #include <initializer_list>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,20 @@ Eigen::Vector2d meetingPoint(const Eigen::Vector2d& a, const Eigen::Vector2d& b,
 
 // Crossings of a ray from p towards +x with the loop: odd means p is enclosed by the loop.
 int rayCrossings(const Polyline& loop, const Eigen::Vector2d& p);
+
+// The least-squares affine map x -> linear x + translation (px) taking from[i] onto to[i].
+struct AffineFit {
+  Eigen::Matrix2d linear = Eigen::Matrix2d::Identity();  // 2x2
+  Eigen::Vector2d translation = Eigen::Vector2d::Zero();
+  double residual = 0;    // sum over the pairs of |fit(from[i]) - to[i]|^2, px^2
+  double fromSpread = 0;  // sum of |from[i] - centroid|^2, px^2
+  double toSpread = 0;    // the same for `to`
+  // Angle of the map's rotation (its polar part's), in [0, pi], radians.
+  double rotation() const;
+};
+
+// The fit of equally long `from` and `to`; none when `from` lies on a line (or is empty).
+std::optional<AffineFit> affineFit(const Polyline& from, const Polyline& to);
 
 // Arc-length parametrization of a closed loop: s in [0, length()) walks the loop from point 0.
 class ArcLengthLoop {

@@ -22,29 +22,19 @@ constexpr double kSquashFit = 0.1;
 // or the loops' aligned starts, correspond); none when it does not fit within kSquashFit.
 std::optional<Eigen::Affine2d> loopFit(const SharedBoundary& boundary, int k, int reference, int loop) {
   constexpr int kPerArc = 32;
-  std::vector<Eigen::Vector2d> from, to;
+  Polyline from, to;
   for (int a : boundary.loopArcs[loop])
     for (int i = 0; i < kPerArc; ++i) {
       const double f = static_cast<double>(i) / kPerArc;
       from.push_back(boundary.atFraction(k, a, f));
       to.push_back(boundary.atFraction(reference, a, f));
     }
-  Eigen::Vector2d cf = Eigen::Vector2d::Zero(), ct = Eigen::Vector2d::Zero();
-  for (size_t i = 0; i < from.size(); ++i) cf += from[i], ct += to[i];
-  cf /= static_cast<double>(from.size()), ct /= static_cast<double>(to.size());
-  Eigen::Matrix2d S = Eigen::Matrix2d::Zero(), M = Eigen::Matrix2d::Zero();  // sums of f f^T and t f^T, 2x2
-  for (size_t i = 0; i < from.size(); ++i) {
-    S += (from[i] - cf) * (from[i] - cf).transpose();
-    M += (to[i] - ct) * (from[i] - cf).transpose();
-  }
-  if (S.determinant() <= 1e-9 * S.trace() * S.trace()) return std::nullopt;  // a line
-  Eigen::Affine2d fit = Eigen::Affine2d::Identity();
-  fit.linear() = M * S.inverse();
-  fit.translation() = ct - fit.linear() * cf;
-  double residual = 0, spread = 0;  // px^2
-  for (size_t i = 0; i < from.size(); ++i) residual += (fit * from[i] - to[i]).squaredNorm(), spread += (to[i] - ct).squaredNorm();
-  if (residual >= kSquashFit * kSquashFit * spread) return std::nullopt;
-  return fit;
+  const std::optional<AffineFit> fit = affineFit(from, to);
+  if (!fit || fit->residual >= kSquashFit * kSquashFit * fit->toSpread) return std::nullopt;
+  Eigen::Affine2d map = Eigen::Affine2d::Identity();
+  map.linear() = fit->linear;
+  map.translation() = fit->translation;
+  return map;
 }
 
 Eigen::Vector2d placed(const std::optional<Eigen::Affine2d>& fit, const Eigen::Vector2d& p) {

@@ -101,43 +101,24 @@ std::string extraLoops(const std::string& more, const std::string& fewer, bool p
 // wide one, which a rotation by 90 deg fits about as well as the stretch does) is matched as
 // drawn, not turned a quarter. Maps that mirror (negative determinant) are not taken.
 double alignedStart(const ArcLengthLoop& source, const ArcLengthLoop& target, int samples) {
-  std::vector<Eigen::Vector2d> a(samples);
-  Eigen::Vector2d ca = Eigen::Vector2d::Zero();
-  for (int i = 0; i < samples; ++i) ca += a[i] = source.at(source.length() * i / samples);
-  ca /= samples;
-  double aa = 0;
-  Eigen::Matrix2d S = Eigen::Matrix2d::Zero();  // sum of a a^T, 2x2
-  for (auto& p : a) {
-    p -= ca;
-    aa += p.squaredNorm();
-    S += p * p.transpose();
-  }
-  const Eigen::Matrix2d Sinv = S.determinant() > 1e-12 * aa * aa ? Eigen::Matrix2d(S.inverse()) : Eigen::Matrix2d::Zero();
+  Polyline a(samples), b(samples);
+  for (int i = 0; i < samples; ++i) a[i] = source.at(source.length() * i / samples);
   const int shifts = 4 * samples;
   constexpr double kMirrored = std::numeric_limits<double>::infinity();
   std::vector<double> cost(shifts, kMirrored), angle(shifts, 0);
-  std::vector<Eigen::Vector2d> b(samples);
-  double spread = aa;
+  double spread = 0;
   for (int s = 0; s < shifts; ++s) {
     const double start = target.length() * s / shifts;
-    Eigen::Vector2d cb = Eigen::Vector2d::Zero();
-    for (int i = 0; i < samples; ++i) cb += b[i] = target.at(start + target.length() * i / samples);
-    cb /= samples;
-    double bb = 0;
-    Eigen::Matrix2d M = Eigen::Matrix2d::Zero();  // sum of b a^T, 2x2
-    for (int i = 0; i < samples; ++i) {
-      const Eigen::Vector2d q = b[i] - cb;
-      bb += q.squaredNorm();
-      M += q * a[i].transpose();
-    }
-    spread = aa + bb;
-    const Eigen::Matrix2d A = M * Sinv;  // the least-squares map a -> b
-    if (A.determinant() <= 0) continue;
-    cost[s] = bb - (A * M.transpose()).trace();  // residual after the best map
-    angle[s] = std::abs(std::atan2(A(1, 0) - A(0, 1), A(0, 0) + A(1, 1)));
+    for (int i = 0; i < samples; ++i) b[i] = target.at(start + target.length() * i / samples);
+    const std::optional<AffineFit> fit = affineFit(a, b);
+    if (!fit) return 0;  // a degenerate source (a line): any start
+    spread = fit->fromSpread + fit->toSpread;
+    if (fit->linear.determinant() <= 0) continue;
+    cost[s] = fit->residual;
+    angle[s] = fit->rotation();
   }
   const double lowest = *std::min_element(cost.begin(), cost.end());
-  if (lowest == kMirrored) return 0;  // a degenerate loop (a line): any start
+  if (lowest == kMirrored) return 0;  // only mirroring maps: any start
   int best = 0;
   for (int s = 0; s < shifts; ++s)
     if (cost[s] <= lowest + 0.01 * spread && (cost[best] > lowest + 0.01 * spread || angle[s] < angle[best])) best = s;
