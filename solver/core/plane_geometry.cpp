@@ -82,6 +82,17 @@ std::optional<AffineFit> affineFit(const Polyline& from, const Polyline& to) {
   return fit;
 }
 
+LoopPoint nearestOnLoop(const Polyline& loop, const Eigen::Vector2d& p) {
+  LoopPoint best;
+  for (size_t i = 0; i < loop.size(); ++i) {
+    const Eigen::Vector2d a = loop[i], b = loop[(i + 1) % loop.size()];
+    const double t = closestParameter(a, b, p);
+    const Eigen::Vector2d q = a + t * (b - a);
+    if ((q - p).norm() < best.distance) best = {static_cast<double>(i) + t, q, (q - p).norm()};
+  }
+  return best;
+}
+
 int rayCrossings(const Polyline& loop, const Eigen::Vector2d& p) {
   int crossings = 0;
   for (size_t i = 0, n = loop.size(); i < n; ++i) {

@@ -3,6 +3,7 @@
 
 #include <Eigen/Core>
 #include <initializer_list>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -28,6 +29,15 @@ bool segmentsMeet(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eige
 // A point where segments [a, b] and [c, d] meet (the midpoint of the overlap when collinear).
 Eigen::Vector2d meetingPoint(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c,
                              const Eigen::Vector2d& d);
+
+// Where on a closed loop the point nearest to p lies: `at` = segment index + fraction along it
+// (segment i runs from point i to point i + 1, the last back to point 0), the point, its distance.
+struct LoopPoint {
+  double at = 0;
+  Eigen::Vector2d point = Eigen::Vector2d::Zero();
+  double distance = std::numeric_limits<double>::infinity();
+};
+LoopPoint nearestOnLoop(const Polyline& loop, const Eigen::Vector2d& p);
 
 // Crossings of a ray from p towards +x with the loop: odd means p is enclosed by the loop.
 int rayCrossings(const Polyline& loop, const Eigen::Vector2d& p);

@@ -21,6 +21,7 @@ struct Region {
 
 struct Regions {
   std::vector<Region> list;
+  int width = 0;           // of the drawing, px
   std::vector<int> label;  // [y * width + x]: index into list, or -1
   double drawn = 0;        // px^2 with alpha >= 128
 };
@@ -33,6 +34,7 @@ int colourDistance(const std::array<int, 3>& a, const std::array<int, 3>& b) {
 Regions segment(const RgbaImage& image, int tolerance) {
   const int w = image.width, h = image.height;
   Regions out;
+  out.width = w;
   out.label.assign(static_cast<size_t>(w) * h, -1);
   const auto colourAt = [&](int x, int y) {
     const uint8_t* p = image.at(x, y);
@@ -87,18 +89,14 @@ bool clearOfPaper(const RgbaImage& image, const Eigen::Vector2d& p, double radiu
   return true;
 }
 
-}  // namespace
-
-std::vector<std::vector<Eigen::Vector2d>> artworkRegionPins(const std::vector<RgbaImage>& drawings, int reference,
-                                                            double clearance, const ArtworkRegionOptions& options) {
-  const int keys = static_cast<int>(drawings.size());
-  std::vector<std::vector<Eigen::Vector2d>> pins(static_cast<size_t>(keys));
-  if (keys < 2) return pins;
-  std::vector<Regions> regions;
-  for (const RgbaImage& image : drawings) regions.push_back(segment(image, options.colourTolerance));
+// The reference's regions that every other key has once and that moved (artworkRegionPins):
+// [region][key], the region matched in each key.
+std::vector<std::vector<const Region*>> movedRegions(const std::vector<Regions>& regions, int reference,
+                                                     const ArtworkRegionOptions& options) {
+  const int keys = static_cast<int>(regions.size());
   const Regions& ref = regions[static_cast<size_t>(reference)];
   const double size = std::sqrt(ref.drawn), reach = 0.3 * size;
-  const int width = drawings[static_cast<size_t>(reference)].width;
+  std::vector<std::vector<const Region*>> out;
   // The fill: the colour of the largest region. Pieces of it that other detail cuts off (the body
   // between two stripes, a tail of the body's colour) change shape with everything around them.
   const Region* fill = nullptr;
@@ -109,7 +107,7 @@ std::vector<std::vector<Eigen::Vector2d>> artworkRegionPins(const std::vector<Rg
     if (a.area < options.minArea || a.area > options.maxShare * ref.drawn || a.touchesPaper) continue;
     if (colourDistance(a.colour, fill->colour) <= 2 * options.colourTolerance) continue;
     const Eigen::Vector2d& c = a.centroid;
-    if (ref.label[static_cast<size_t>(std::floor(c.y())) * width + static_cast<size_t>(std::floor(c.x()))] != static_cast<int>(r))
+    if (ref.label[static_cast<size_t>(std::floor(c.y())) * ref.width + static_cast<size_t>(std::floor(c.x()))] != static_cast<int>(r))
       continue;  // a ring or a crescent: its centroid is not on it
     std::vector<const Region*> match(static_cast<size_t>(keys), &a);
     bool found = true, moved = false;
@@ -128,7 +126,86 @@ std::vector<std::vector<Eigen::Vector2d>> artworkRegionPins(const std::vector<Rg
       const Region& b = *match[static_cast<size_t>(k)];
       moved = moved || (b.centroid - c).norm() > 0.5 || std::abs(b.area / a.area - 1) > 0.05;
     }
-    if (!found || !moved) continue;
+    if (found && moved) out.push_back(std::move(match));
+  }
+  return out;
+}
+
+std::vector<Regions> segmentAll(const std::vector<RgbaImage>& drawings, const ArtworkRegionOptions& options) {
+  std::vector<Regions> regions;
+  for (const RgbaImage& image : drawings) regions.push_back(segment(image, options.colourTolerance));
+  return regions;
+}
+
+// One place where a region meets the outline: the loop points at the middle and the two ends of
+// the stretch of outline it touches, the ends in the loop's walking order.
+struct Contact {
+  Eigen::Vector2d middle, first, last;
+  double length = 0;  // of the stretch along the loop, px
+};
+
+// Where region `id` of `regions` comes within `reach` px of `loops`: its border pixels that near,
+// grouped by where along the loops they are nearest (a gap of more than `reach` starts a new
+// group). Empty when it touches no loop.
+std::vector<Contact> contacts(const Regions& regions, int id, const std::vector<Polyline>& loops, double reach) {
+  const int w = regions.width, h = static_cast<int>(regions.label.size()) / std::max(1, regions.width);
+  std::vector<std::vector<double>> along(loops.size());  // [loop]: arc lengths of the near border pixels
+  std::vector<ArcLengthLoop> parametrized;
+  for (const Polyline& loop : loops) parametrized.emplace_back(loop);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      if (regions.label[static_cast<size_t>(y) * w + x] != id) continue;
+      const bool border = x == 0 || y == 0 || x + 1 == w || y + 1 == h || regions.label[static_cast<size_t>(y) * w + x - 1] != id ||
+                          regions.label[static_cast<size_t>(y) * w + x + 1] != id ||
+                          regions.label[static_cast<size_t>(y - 1) * w + x] != id || regions.label[static_cast<size_t>(y + 1) * w + x] != id;
+      if (!border) continue;
+      const Eigen::Vector2d p(x + 0.5, y + 0.5);
+      size_t bestLoop = 0;
+      LoopPoint best;
+      for (size_t l = 0; l < loops.size(); ++l) {
+        const LoopPoint q = nearestOnLoop(loops[l], p);
+        if (q.distance < best.distance) best = q, bestLoop = l;
+      }
+      if (best.distance > reach) continue;
+      const int i = static_cast<int>(best.at);
+      const Eigen::Vector2d a = loops[bestLoop][static_cast<size_t>(i)];
+      along[bestLoop].push_back(parametrized[bestLoop].parameterOfPoint(i) + (best.point - a).norm());
+    }
+  std::vector<Contact> out;
+  for (size_t l = 0; l < loops.size(); ++l) {
+    std::vector<double>& s = along[l];
+    if (s.empty()) continue;
+    const ArcLengthLoop& loop = parametrized[l];
+    std::sort(s.begin(), s.end());
+    // Start at the widest gap (cyclic), so no group is split at the loop's start.
+    size_t start = 0;
+    double widest = s.front() + loop.length() - s.back();
+    for (size_t i = 1; i < s.size(); ++i)
+      if (s[i] - s[i - 1] > widest) widest = s[i] - s[i - 1], start = i;
+    double first = s[start], last = first;
+    for (size_t n = 1; n <= s.size(); ++n) {
+      const size_t i = (start + n) % s.size();
+      double next = s[i];
+      if (next < last) next += loop.length();
+      if (n == s.size() || next - last > reach) {
+        out.push_back({loop.at(0.5 * (first + last)), loop.at(first), loop.at(last), last - first});
+        first = next;
+      }
+      last = next;
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<std::vector<Eigen::Vector2d>> artworkRegionPins(const std::vector<RgbaImage>& drawings, int reference,
+                                                            double clearance, const ArtworkRegionOptions& options) {
+  const int keys = static_cast<int>(drawings.size());
+  std::vector<std::vector<Eigen::Vector2d>> pins(static_cast<size_t>(keys));
+  if (keys < 2) return pins;
+  const std::vector<Regions> regions = segmentAll(drawings, options);
+  for (const std::vector<const Region*>& match : movedRegions(regions, reference, options)) {
     // Its centroid in every key, kept when clear of the paper and of the centroids kept before.
     bool keep = true;
     for (int k = 0; k < keys && keep; ++k) {
@@ -140,6 +217,69 @@ std::vector<std::vector<Eigen::Vector2d>> artworkRegionPins(const std::vector<Rg
     for (int k = 0; k < keys; ++k) pins[static_cast<size_t>(k)].push_back(match[static_cast<size_t>(k)]->centroid);
   }
   return pins;
+}
+
+std::vector<std::vector<Eigen::Vector2d>> artworkRegionContacts(const std::vector<RgbaImage>& drawings, int reference,
+                                                                const std::vector<std::vector<Outline>>& outlines,
+                                                                const ArtworkRegionOptions& options) {
+  const int keys = static_cast<int>(drawings.size());
+  std::vector<std::vector<Eigen::Vector2d>> out;
+  if (keys < 2 || outlines.size() != drawings.size()) return out;
+  std::vector<std::vector<Polyline>> loops(static_cast<size_t>(keys));  // [key]: outer loops and holes
+  for (int k = 0; k < keys; ++k)
+    for (const Outline& o : outlines[static_cast<size_t>(k)]) {
+      loops[static_cast<size_t>(k)].push_back(o.outer);
+      loops[static_cast<size_t>(k)].insert(loops[static_cast<size_t>(k)].end(), o.holes.begin(), o.holes.end());
+    }
+  const std::vector<Regions> regions = segmentAll(drawings, options);
+  for (const std::vector<const Region*>& match : movedRegions(regions, reference, options)) {
+    std::vector<std::vector<Contact>> found(static_cast<size_t>(keys));  // [key][contact]
+    for (int k = 0; k < keys; ++k) {
+      const Regions& r = regions[static_cast<size_t>(k)];
+      const int id = static_cast<int>(match[static_cast<size_t>(k)] - r.list.data());
+      found[static_cast<size_t>(k)] = contacts(r, id, loops[static_cast<size_t>(k)], options.contactReach);
+    }
+    const std::vector<Contact>& refContacts = found[static_cast<size_t>(reference)];
+    bool same = !refContacts.empty();
+    for (int k = 0; k < keys; ++k) same = same && found[static_cast<size_t>(k)].size() == refContacts.size();
+    if (!same) continue;
+    // Each reference contact with the key's contact in the nearest direction from the region's
+    // centroid, when that is the reference contact's nearest in turn and within 45 deg; then the
+    // ends of the stretch each touches, first with first and last with last.
+    const auto direction = [&](int k, const Contact& c) {
+      const Eigen::Vector2d d = c.middle - match[static_cast<size_t>(k)]->centroid;
+      return std::atan2(d.y(), d.x());
+    };
+    const auto turn = [](double a, double b) { return std::abs(std::remainder(a - b, 2 * M_PI)); };
+    const auto nearest = [&](int k, double want) {
+      const std::vector<Contact>& own = found[static_cast<size_t>(k)];
+      size_t best = 0;
+      for (size_t j = 1; j < own.size(); ++j)
+        if (turn(direction(k, own[j]), want) < turn(direction(k, own[best]), want)) best = j;
+      return best;
+    };
+    for (size_t c = 0; c < refContacts.size(); ++c) {
+      const double want = direction(reference, refContacts[c]);
+      std::vector<Eigen::Vector2d> first(static_cast<size_t>(keys)), last(static_cast<size_t>(keys)), middle(first);
+      bool paired = true, long_ = true;
+      for (int k = 0; k < keys && paired; ++k) {
+        const Contact& own = found[static_cast<size_t>(k)][nearest(k, want)];
+        paired = nearest(reference, direction(k, own)) == c && turn(direction(k, own), want) < M_PI / 4;
+        first[static_cast<size_t>(k)] = own.first;
+        last[static_cast<size_t>(k)] = own.last;
+        middle[static_cast<size_t>(k)] = own.middle;
+        long_ = long_ && own.length >= 2 * options.contactReach;
+      }
+      if (!paired) continue;
+      if (!long_) {  // a line's end, or a stretch too short in some key to hold two knots
+        out.push_back(std::move(middle));
+        continue;
+      }
+      out.push_back(std::move(first));
+      out.push_back(std::move(last));
+    }
+  }
+  return out;
 }
 
 }  // namespace ib

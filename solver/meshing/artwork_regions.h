@@ -5,6 +5,7 @@
 #pragma once
 
 #include "core/png_image.h"
+#include "meshing/tracing.h"
 
 #include <Eigen/Core>
 #include <vector>
@@ -15,6 +16,8 @@ struct ArtworkRegionOptions {
   int colourTolerance = 24;  // /255: largest channel difference from a region's first pixel. Default 24.
   double minArea = 6;        // px^2: smaller regions are specks. Default 6.
   double maxShare = 0.3;     // regions over this share of the drawn pixels are fills, not detail. Default 0.3.
+  // px: a region's pixels this near the outline touch it (across the outline's ink line). Default 4.
+  double contactReach = 4;
 };
 
 // Points to pin, [key][pin] in drawing px: the centroid, in every key, of every region of the
@@ -28,5 +31,17 @@ struct ArtworkRegionOptions {
 // by its moments, folded chick-squash's initial map near its feet; centroids alone do not.)
 std::vector<std::vector<Eigen::Vector2d>> artworkRegionPins(const std::vector<RgbaImage>& drawings, int reference,
                                                             double clearance, const ArtworkRegionOptions& options = {});
+
+// Where those regions meet the outline: a region that moved (as artworkRegionPins matches them)
+// and comes within options.contactReach px of key k's traced `outlines[k]` (outer loops and
+// holes) at the same number of places in every key, each place paired across keys by its
+// direction from the region's centroid (the nearest both ways, within 45 deg): [contact][key],
+// points on the keys' loops (px): the two ends of the stretch of outline it touches, or its middle
+// where that stretch is shorter than 2 contactReach in some key. A stripe across a body meets the
+// outline at its two ends; knots there (SharedBoundaryOptions::artworkKnots) carry the stripe's
+// ends onto each other.
+std::vector<std::vector<Eigen::Vector2d>> artworkRegionContacts(const std::vector<RgbaImage>& drawings, int reference,
+                                                                const std::vector<std::vector<Outline>>& outlines,
+                                                                const ArtworkRegionOptions& options = {});
 
 }  // namespace ib

@@ -5,6 +5,7 @@
 #include "core/error.h"
 #include "core/plane_geometry.h"
 #include "core/png_image.h"
+#include "meshing/artwork_regions.h"
 #include "meshing/interior_pins.h"
 #include "meshing/mesh_size.h"
 #include "meshing/shared_boundary.h"
@@ -318,6 +319,8 @@ BuiltScene buildMultimesh(const Scene& scene, const MultimeshBuildOptions& optio
   if (scene.corners == CornerHandling::kVertices) cornerChain.push_back(CornerHandling::kPaired);
   if (scene.corners != CornerHandling::kOff) cornerChain.push_back(CornerHandling::kOff);
   const double firstEdgeLength = edgeLength;
+  // Under "artwork", where moved regions (a stripe) meet the outline in every key: knots.
+  const KeyPoints contacts = artwork ? artworkRegionContacts(drawings, scene.reference, built.outlines) : KeyPoints{};
   std::vector<std::string> fallbacks;  // what folded, one entry per setting given up
   std::string failure;                 // the last fold: `key "k" near (x, y)`
   std::string failedKey;               // that key's name, quoted
@@ -336,6 +339,7 @@ BuiltScene buildMultimesh(const Scene& scene, const MultimeshBuildOptions& optio
       bo.correspondence = correspondence;
       bo.shapeKnotsClearOf = folds;
       bo.shapeKnotClearance = kFoldClearance * edgeLength;
+      bo.artworkKnots = contacts;
       const SharedBoundary boundary = matchBoundaries(scene, built.shapes, bo);
       if (options.progress)
         options.progress("meshing " + scene.keys[scene.reference].name + " (" +

@@ -141,4 +141,68 @@ void placeShapeKnots(SharedBoundary& boundary, int reference, const SharedBounda
   }
 }
 
+namespace {
+
+// Where p lies on key `key`'s outline: the arc (not a cut side) of the loop nearest to p and the
+// fraction of that arc's length there; {-1, 0} when p lies on a cut side.
+std::pair<int, double> arcFractionOf(const SharedBoundary& boundary, int key, const Eigen::Vector2d& p) {
+  const KeyBoundary& kb = boundary.keys[key];
+  LoopPoint best;
+  size_t loop = 0;
+  for (size_t l = 0; l < kb.loops.size(); ++l) {
+    const LoopPoint q = nearestOnLoop(kb.loops[l].points(), p);
+    if (q.distance < best.distance) best = q, loop = l;
+  }
+  if (kb.loops.empty()) return {-1, 0};
+  const ArcLengthLoop& lp = kb.loops[loop];
+  const int i = static_cast<int>(best.at);
+  const double s = lp.parameterOfPoint(i) + (best.point - lp.points()[static_cast<size_t>(i)]).norm();
+  for (int a : boundary.loopArcs[loop]) {
+    const double along = std::fmod(s - kb.arcStarts[loop][boundary.arcs[a].indexInLoop] + 2 * lp.length(), lp.length());
+    const double length = boundary.arcLength(key, a);
+    if (along <= length) return {boundary.arcs[a].partner >= 0 ? -1 : a, length > 0 ? along / length : 0};
+  }
+  return {-1, 0};
+}
+
+}  // namespace
+
+void placeArtworkKnots(SharedBoundary& boundary, const SharedBoundaryOptions& options) {
+  const int keys = static_cast<int>(boundary.keys.size());
+  for (const std::vector<Eigen::Vector2d>& points : options.artworkKnots) {
+    if (static_cast<int>(points.size()) != keys) continue;
+    bool nearFold = false;  // where a key folded before, the outline follows arc length
+    for (const Eigen::Vector2d& p : points)
+      for (const Eigen::Vector2d& q : options.shapeKnotsClearOf) nearFold = nearFold || (p - q).norm() < options.shapeKnotClearance;
+    if (nearFold) continue;
+    int arc = -2;
+    std::vector<double> fractions(keys);
+    for (int k = 0; k < keys && arc != -1; ++k) {
+      const auto [a, f] = arcFractionOf(boundary, k, points[k]);
+      arc = arc == -2 || arc == a ? a : -1;
+      fractions[k] = f;
+    }
+    if (arc < 0) continue;
+    // Its place among the arc's knots: the same in every key, an edge length clear of its neighbours.
+    long index = -1;
+    bool clear = true;
+    for (int k = 0; k < keys && clear; ++k) {
+      const std::vector<double>& f = boundary.keys[k].knotFractions[arc];
+      const long i = std::lower_bound(f.begin(), f.end(), fractions[k]) - f.begin();
+      const double before = i > 0 ? f[i - 1] : 0, after = i < static_cast<long>(f.size()) ? f[i] : 1;
+      const double length = boundary.arcLength(k, arc);
+      clear = (index < 0 || index == i) && (fractions[k] - before) * length >= options.edgeLength &&
+              (after - fractions[k]) * length >= options.edgeLength;
+      index = i;
+    }
+    if (!clear) continue;
+    for (int k = 0; k < keys; ++k) {
+      std::vector<double>& f = boundary.keys[k].knotFractions[arc];
+      f.insert(f.begin() + index, fractions[k]);
+    }
+    auto& cornerIn = boundary.arcs[arc].knotCornerIn;
+    cornerIn.insert(cornerIn.begin() + index, std::vector<char>(keys, 1));
+  }
+}
+
 }  // namespace ib

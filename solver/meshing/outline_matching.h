@@ -37,4 +37,8 @@ std::vector<double> matchByShape(const std::vector<Eigen::Vector2d>& reference, 
 // two edge lengths of the reference's outline.
 void placeShapeKnots(SharedBoundary& boundary, int reference, const SharedBoundaryOptions& options);
 
+// Adds options.artworkKnots as knots held in every key (SharedBoundaryOptions::artworkKnots says
+// which are kept), before the shape knots are placed between the knots.
+void placeArtworkKnots(SharedBoundary& boundary, const SharedBoundaryOptions& options);
+
 }  // namespace ib

@@ -138,7 +138,10 @@ class Matcher {
     for (size_t k = 0; k < shapes_.size(); ++k) matchKey(static_cast<int>(k));
     pairCutSides();
     placeCornerKnots(out_, ref_, options_);
-    if (options_.correspondence == OutlineCorrespondence::kArtwork) placeShapeKnots(out_, ref_, options_);
+    if (options_.correspondence == OutlineCorrespondence::kArtwork) {
+      placeArtworkKnots(out_, options_);
+      placeShapeKnots(out_, ref_, options_);
+    }
     placeCurveKnots(out_, options_);
     countSegments(out_, ref_, options_.edgeLength);
     return std::move(out_);

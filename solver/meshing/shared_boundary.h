@@ -58,6 +58,12 @@ struct SharedBoundaryOptions {
   // Default none.
   std::vector<Eigen::Vector2d> shapeKnotsClearOf = {};
   double shapeKnotClearance = 0;  // px; default 0
+  // With kArtwork: points that correspond, [knot][key] (px, on or near each key's outline), such
+  // as where a stripe drawn across the shape meets the outline in every key
+  // (artworkRegionContacts). Each becomes a knot held in every key where it lies on the same arc
+  // in every key, in the same order among the arc's knots, at least an edge length from them and
+  // from the arc's ends; the others are left out. Default none.
+  std::vector<std::vector<Eigen::Vector2d>> artworkKnots = {};
 };
 
 struct SharedBoundary {
@@ -81,8 +87,8 @@ struct SharedBoundary {
 
 // Matches the keys' loops to the reference key's. Every featured loop must carry the same
 // features in the same cyclic order in every key; featureless loops are paired, pieces with pieces
-// and holes with holes, by nearest centroid and size, and started where a rigid alignment of
-// arc-length samples fits best. Throws InputError naming the file and the keys: for features that
+// and holes with holes, by nearest centroid and size, and started where an affine map of
+// arc-length samples fits best (ties to the least rotation). Throws InputError naming the file and the keys: for features that
 // differ, which ones and on which piece or hole; for an extra hole or piece in one key, where it is
 // and the cut (split, slit) or drawing fix that makes the topology match; for pairings about as good
 // either way round, that features must say which loop becomes which.

@@ -33,17 +33,6 @@ const std::vector<Outline>* KeyOutlines::of(const std::string& key) {
   return &it->second;
 }
 
-LoopPoint nearestOnLoop(const Polyline& loop, const Eigen::Vector2d& p) {
-  LoopPoint best;
-  for (size_t i = 0; i < loop.size(); ++i) {
-    const Eigen::Vector2d a = loop[i], b = loop[(i + 1) % loop.size()];
-    const double t = closestParameter(a, b, p);
-    const Eigen::Vector2d q = a + t * (b - a);
-    if ((q - p).norm() < best.distance) best = {static_cast<double>(i) + t, q, (q - p).norm()};
-  }
-  return best;
-}
-
 Eigen::Vector2d nearestOnOutlines(const std::vector<Outline>& outlines, const Eigen::Vector2d& p) {
   LoopPoint best;
   best.point = p;

@@ -7,7 +7,6 @@
 #include "scene/scene.h"
 
 #include <Eigen/Core>
-#include <cmath>
 #include <map>
 #include <string>
 #include <vector>
@@ -31,15 +30,6 @@ class KeyOutlines {
   std::map<std::string, std::pair<std::string, Polyline>> keys_;  // key -> drawing path, hole points
   std::map<std::string, std::vector<Outline>> traced_;
 };
-
-// Where on a closed loop the point nearest to p lies: `at` = segment index + fraction along it
-// (segment i runs from point i to point i + 1, the last back to point 0), the point, its distance.
-struct LoopPoint {
-  double at = 0;
-  Eigen::Vector2d point = Eigen::Vector2d::Zero();
-  double distance = INFINITY;
-};
-LoopPoint nearestOnLoop(const Polyline& loop, const Eigen::Vector2d& p);
 
 // The nearest point to p (drawing pixels) on any loop of `outlines`, outer or hole; p itself
 // when there are none.
