@@ -17,6 +17,7 @@ struct Region {
   double area = 0;              // px^2
   Eigen::Vector2d centroid = Eigen::Vector2d::Zero();
   bool touchesPaper = false;                              // a 4-neighbour is paper (alpha under 128) or outside
+  std::array<int, 4> box{};                               // its pixels' columns and rows: x0, y0, x1, y1 (inclusive)
 };
 
 struct Regions {
@@ -56,6 +57,9 @@ Regions segment(const RgbaImage& image, int tolerance) {
         stack.pop_back();
         const int px = at % w, py = at / w;
         const Eigen::Vector2d c(px + 0.5, py + 0.5);
+        r.box = r.area == 0 ? std::array<int, 4>{px, py, px, py}
+                            : std::array<int, 4>{std::min(r.box[0], px), std::min(r.box[1], py), std::max(r.box[2], px),
+                                                 std::max(r.box[3], py)};
         r.area += 1;
         sum += c;
         const int nx[4] = {px - 1, px + 1, px, px}, ny[4] = {py, py, py - 1, py + 1};
@@ -152,8 +156,9 @@ std::vector<Contact> contacts(const Regions& regions, int id, const std::vector<
   std::vector<std::vector<double>> along(loops.size());  // [loop]: arc lengths of the near border pixels
   std::vector<ArcLengthLoop> parametrized;
   for (const Polyline& loop : loops) parametrized.emplace_back(loop);
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
+  const std::array<int, 4>& box = regions.list[static_cast<size_t>(id)].box;
+  for (int y = box[1]; y <= box[3]; ++y)
+    for (int x = box[0]; x <= box[2]; ++x) {
       if (regions.label[static_cast<size_t>(y) * w + x] != id) continue;
       const bool border = x == 0 || y == 0 || x + 1 == w || y + 1 == h || regions.label[static_cast<size_t>(y) * w + x - 1] != id ||
                           regions.label[static_cast<size_t>(y) * w + x + 1] != id ||
