@@ -69,12 +69,23 @@ std::string textFor(const SceneDocument& doc, const std::string& out) {
   return json.dump(2) + "\n";
 }
 
+// The editor's window with edit's arguments; without the engine there is none.
+int openEditor(const std::vector<std::string>& args) {
+#ifdef INBETWEEN_WITH_ENGINE
+  return runPlayerWindow(args, true);
+#else
+  (void)args;
+  throw InputError("edit: this inbetween was built without the engine (INBETWEEN_ENGINE=OFF), which draws the editor's "
+                   "window: edit with --apply, or build with the engine");
+#endif
+}
+
 }  // namespace
 
 int runEdit(const std::vector<std::string>& args) {
   if (cli::printHelpIfAsked(args, kEditUsage)) return 0;
   if (std::none_of(args.begin(), args.end(), [](const std::string& a) { return a.rfind("--apply", 0) == 0; }))
-    return runPlayerWindow(args, true);
+    return openEditor(args);
   const cli::Arguments arguments("edit", cli::expandShortOutput(args), {"apply", "output", "snap"}, {});
   if (arguments.positional().size() != 1) throw InputError("edit: expected one SCENE (see `inbetween edit --help`)");
   const std::string scene = arguments.positional()[0], opsFile = arguments.value("apply", "");
@@ -122,7 +133,12 @@ int runNew(const std::vector<std::string>& args) {
   std::printf("), a %zu s loop at %g fps\n", names.size(), fps);
   std::fflush(stdout);
   if (arguments.flag("no-window")) return 0;
+#ifdef INBETWEEN_WITH_ENGINE
   return runPlayerWindow({scene}, true);
+#else
+  std::printf("no editor window: this inbetween was built without the engine (INBETWEEN_ENGINE=OFF)\n");
+  return 0;
+#endif
 }
 
 }  // namespace ib
