@@ -85,7 +85,7 @@ TEST_CASE("correspondence artwork: chick-squash's eye and stripe, which move wit
   const Scene chick = correspondenceScene("chick-squash", OutlineCorrespondence::kArtwork);
   std::vector<RgbaImage> drawings;
   for (const KeySpec& key : chick.keys) drawings.push_back(readPng(key.drawing));
-  const std::vector<std::vector<Eigen::Vector2d>> pins = artworkRegionPins(drawings, chick.reference, 3.0);
+  const std::vector<std::vector<Eigen::Vector2d>> pins = ArtworkRegions(drawings, chick.reference).pins(3.0);
   REQUIRE(pins.size() == 3);
   REQUIRE(pins[0].size() == 2);
   // tests/correspondence/draw.py: the body an ellipse (48, 87 - ry) with radii (rx, ry), the eye a
@@ -100,7 +100,7 @@ TEST_CASE("correspondence artwork: chick-squash's eye and stripe, which move wit
   const Scene cat = correspondenceScene("cat-tail", OutlineCorrespondence::kArtwork);
   std::vector<RgbaImage> catDrawings;
   for (const KeySpec& key : cat.keys) catDrawings.push_back(readPng(key.drawing));
-  CHECK(artworkRegionPins(catDrawings, cat.reference, 12.0)[0].empty());
+  CHECK(ArtworkRegions(catDrawings, cat.reference).pins(12.0)[0].empty());
 }
 
 TEST_CASE("correspondence artwork: chick-squash builds at its first edge length without a note under either "

@@ -144,6 +144,11 @@ Eigen::Vector2d ArcLengthLoop::pointIn(size_t i, double local) const {
   return (1 - t) * points_[i] + t * points_[(i + 1) % points_.size()];
 }
 
+double ArcLengthLoop::parameterOf(const LoopPoint& q) const {
+  const size_t i = std::min(static_cast<size_t>(q.at), points_.size() - 1);
+  return cumulative_[i] + (q.point - points_[i]).norm();
+}
+
 Eigen::Vector2d ArcLengthLoop::at(double s) const {
   if (points_.empty()) return Eigen::Vector2d::Zero();
   if (!(length() > 0)) return points_[0];

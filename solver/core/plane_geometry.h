@@ -65,6 +65,8 @@ class ArcLengthLoop {
   double length() const { return cumulative_.back(); }
   const Polyline& points() const { return points_; }
   double parameterOfPoint(int i) const { return cumulative_[i]; }
+  // The arc length at q, a point nearestOnLoop found on this loop's points().
+  double parameterOf(const LoopPoint& q) const;
   // The point at arc length s, s taken modulo length().
   Eigen::Vector2d at(double s) const;
   // Largest distance from the loop between arc lengths s0 <= s1 (walking forwards, modulo

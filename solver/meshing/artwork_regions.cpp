@@ -22,9 +22,10 @@ struct Region {
 
 struct Regions {
   std::vector<Region> list;
-  int width = 0;           // of the drawing, px
-  std::vector<int> label;  // [y * width + x]: index into list, or -1
-  double drawn = 0;        // px^2 with alpha >= 128
+  int width = 0, height = 0;   // of the drawing, px
+  std::vector<int> label;      // [y * width + x]: index into list, or -1
+  std::vector<uint8_t> paper;  // [y * width + x]: 1 where alpha < 128
+  double drawn = 0;            // px^2 with alpha >= 128
 };
 
 int colourDistance(const std::array<int, 3>& a, const std::array<int, 3>& b) {
@@ -36,7 +37,9 @@ Regions segment(const RgbaImage& image, int tolerance) {
   const int w = image.width, h = image.height;
   Regions out;
   out.width = w;
+  out.height = h;
   out.label.assign(static_cast<size_t>(w) * h, -1);
+  out.paper.assign(static_cast<size_t>(w) * h, 0);
   const auto colourAt = [&](int x, int y) {
     const uint8_t* p = image.at(x, y);
     return std::array<int, 3>{p[0], p[1], p[2]};
@@ -45,6 +48,7 @@ Regions segment(const RgbaImage& image, int tolerance) {
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
       out.drawn += image.at(x, y)[3] >= 128;
+      out.paper[static_cast<size_t>(y) * w + x] = image.at(x, y)[3] < 128;
       if (image.at(x, y)[3] < kOpaque || out.label[static_cast<size_t>(y) * w + x] >= 0) continue;
       Region r;
       r.colour = colourAt(x, y);
@@ -82,25 +86,25 @@ Regions segment(const RgbaImage& image, int tolerance) {
 }
 
 // Whether every pixel centre within `radius` of p is drawn (alpha >= 128).
-bool clearOfPaper(const RgbaImage& image, const Eigen::Vector2d& p, double radius) {
+bool clearOfPaper(const Regions& image, const Eigen::Vector2d& p, double radius) {
   const int r = static_cast<int>(std::ceil(radius));
   for (int dy = -r; dy <= r; ++dy)
     for (int dx = -r; dx <= r; ++dx) {
       if (dx * dx + dy * dy > radius * radius) continue;
       const int x = static_cast<int>(std::floor(p.x())) + dx, y = static_cast<int>(std::floor(p.y())) + dy;
-      if (x < 0 || y < 0 || x >= image.width || y >= image.height || image.at(x, y)[3] < 128) return false;
+      if (x < 0 || y < 0 || x >= image.width || y >= image.height || image.paper[static_cast<size_t>(y) * image.width + x]) return false;
     }
   return true;
 }
 
-// The reference's regions that every other key has once and that moved (artworkRegionPins):
-// [region][key], the region matched in each key.
-std::vector<std::vector<const Region*>> movedRegions(const std::vector<Regions>& regions, int reference,
+// The reference's regions that every other key has once and that moved (ArtworkRegions):
+// [region][key], the index of the region matched in each key.
+std::vector<std::vector<int>> movedRegions(const std::vector<Regions>& regions, int reference,
                                                      const ArtworkRegionOptions& options) {
   const int keys = static_cast<int>(regions.size());
   const Regions& ref = regions[static_cast<size_t>(reference)];
   const double size = std::sqrt(ref.drawn), reach = 0.3 * size;
-  std::vector<std::vector<const Region*>> out;
+  std::vector<std::vector<int>> out;
   // The fill: the colour of the largest region. Pieces of it that other detail cuts off (the body
   // between two stripes, a tail of the body's colour) change shape with everything around them.
   const Region* fill = nullptr;
@@ -113,32 +117,28 @@ std::vector<std::vector<const Region*>> movedRegions(const std::vector<Regions>&
     const Eigen::Vector2d& c = a.centroid;
     if (ref.label[static_cast<size_t>(std::floor(c.y())) * ref.width + static_cast<size_t>(std::floor(c.x()))] != static_cast<int>(r))
       continue;  // a ring or a crescent: its centroid is not on it
-    std::vector<const Region*> match(static_cast<size_t>(keys), &a);
+    std::vector<int> match(static_cast<size_t>(keys), static_cast<int>(r));
     bool found = true, moved = false;
     for (int k = 0; k < keys && found; ++k) {
       if (k == reference) continue;
       double best = std::numeric_limits<double>::infinity(), second = best;
-      for (const Region& b : regions[static_cast<size_t>(k)].list) {
+      const std::vector<Region>& list = regions[static_cast<size_t>(k)].list;
+      for (size_t j = 0; j < list.size(); ++j) {
+        const Region& b = list[j];
         const int colour = colourDistance(a.colour, b.colour);
         const double ratio = b.area / a.area, distance = (b.centroid - c).norm();
         if (colour > 2 * options.colourTolerance || ratio < 0.4 || ratio > 2.5 || distance > reach || b.touchesPaper) continue;
         const double cost = colour / (2.0 * options.colourTolerance) + std::abs(std::log(ratio)) + distance / reach;
-        if (cost < best) second = best, best = cost, match[static_cast<size_t>(k)] = &b;
+        if (cost < best) second = best, best = cost, match[static_cast<size_t>(k)] = static_cast<int>(j);
         else second = std::min(second, cost);
       }
       found = best < std::numeric_limits<double>::infinity() && second >= best + 0.3;
-      const Region& b = *match[static_cast<size_t>(k)];
+      const Region& b = list[static_cast<size_t>(match[static_cast<size_t>(k)])];
       moved = moved || (b.centroid - c).norm() > 0.5 || std::abs(b.area / a.area - 1) > 0.05;
     }
     if (found && moved) out.push_back(std::move(match));
   }
   return out;
-}
-
-std::vector<Regions> segmentAll(const std::vector<RgbaImage>& drawings, const ArtworkRegionOptions& options) {
-  std::vector<Regions> regions;
-  for (const RgbaImage& image : drawings) regions.push_back(segment(image, options.colourTolerance));
-  return regions;
 }
 
 // One place where a region meets the outline: the loop points at the middle and the two ends of
@@ -151,7 +151,7 @@ struct Contact {
 // Where region `id` of `regions` comes within `reach` px of `loops`: its border pixels that near,
 // grouped by where along the loops they are nearest (a gap of more than `reach` starts a new
 // group). Empty when it touches no loop.
-std::vector<Contact> contacts(const Regions& regions, int id, const std::vector<Polyline>& loops, double reach) {
+std::vector<Contact> outlineContacts(const Regions& regions, int id, const std::vector<Polyline>& loops, double reach) {
   const int w = regions.width, h = static_cast<int>(regions.label.size()) / std::max(1, regions.width);
   std::vector<std::vector<double>> along(loops.size());  // [loop]: arc lengths of the near border pixels
   std::vector<ArcLengthLoop> parametrized;
@@ -172,9 +172,7 @@ std::vector<Contact> contacts(const Regions& regions, int id, const std::vector<
         if (q.distance < best.distance) best = q, bestLoop = l;
       }
       if (best.distance > reach) continue;
-      const int i = static_cast<int>(best.at);
-      const Eigen::Vector2d a = loops[bestLoop][static_cast<size_t>(i)];
-      along[bestLoop].push_back(parametrized[bestLoop].parameterOfPoint(i) + (best.point - a).norm());
+      along[bestLoop].push_back(parametrized[bestLoop].parameterOf(best));
     }
   std::vector<Contact> out;
   for (size_t l = 0; l < loops.size(); ++l) {
@@ -204,46 +202,63 @@ std::vector<Contact> contacts(const Regions& regions, int id, const std::vector<
 
 }  // namespace
 
-std::vector<std::vector<Eigen::Vector2d>> artworkRegionPins(const std::vector<RgbaImage>& drawings, int reference,
-                                                            double clearance, const ArtworkRegionOptions& options) {
-  const int keys = static_cast<int>(drawings.size());
+struct ArtworkRegions::Impl {
+  int reference = 0;
+  ArtworkRegionOptions options;
+  std::vector<Regions> regions;          // [key]
+  std::vector<std::vector<int>> moved;  // [region][key]: movedRegions
+
+  const Region& region(size_t r, int k) const {
+    return regions[static_cast<size_t>(k)].list[static_cast<size_t>(moved[r][static_cast<size_t>(k)])];
+  }
+};
+
+ArtworkRegions::ArtworkRegions(const std::vector<RgbaImage>& drawings, int reference, const ArtworkRegionOptions& options)
+    : impl_(std::make_unique<Impl>()) {
+  impl_->reference = reference;
+  impl_->options = options;
+  if (drawings.size() < 2) return;
+  for (const RgbaImage& image : drawings) impl_->regions.push_back(segment(image, options.colourTolerance));
+  impl_->moved = movedRegions(impl_->regions, reference, options);
+}
+
+ArtworkRegions::~ArtworkRegions() = default;
+ArtworkRegions::ArtworkRegions(ArtworkRegions&&) noexcept = default;
+ArtworkRegions& ArtworkRegions::operator=(ArtworkRegions&&) noexcept = default;
+
+std::vector<std::vector<Eigen::Vector2d>> ArtworkRegions::pins(double clearance) const {
+  const int keys = static_cast<int>(impl_->regions.size());
   std::vector<std::vector<Eigen::Vector2d>> pins(static_cast<size_t>(keys));
-  if (keys < 2) return pins;
-  const std::vector<Regions> regions = segmentAll(drawings, options);
-  for (const std::vector<const Region*>& match : movedRegions(regions, reference, options)) {
+  for (size_t r = 0; r < impl_->moved.size(); ++r) {
     // Its centroid in every key, kept when clear of the paper and of the centroids kept before.
     bool keep = true;
     for (int k = 0; k < keys && keep; ++k) {
-      const Eigen::Vector2d& at = match[static_cast<size_t>(k)]->centroid;
-      keep = clearOfPaper(drawings[static_cast<size_t>(k)], at, clearance);
+      const Eigen::Vector2d& at = impl_->region(r, k).centroid;
+      keep = clearOfPaper(impl_->regions[static_cast<size_t>(k)], at, clearance);
       for (const Eigen::Vector2d& q : pins[static_cast<size_t>(k)]) keep = keep && (q - at).norm() >= clearance;
     }
     if (!keep) continue;
-    for (int k = 0; k < keys; ++k) pins[static_cast<size_t>(k)].push_back(match[static_cast<size_t>(k)]->centroid);
+    for (int k = 0; k < keys; ++k) pins[static_cast<size_t>(k)].push_back(impl_->region(r, k).centroid);
   }
   return pins;
 }
 
-std::vector<std::vector<Eigen::Vector2d>> artworkRegionContacts(const std::vector<RgbaImage>& drawings, int reference,
-                                                                const std::vector<std::vector<Outline>>& outlines,
-                                                                const ArtworkRegionOptions& options) {
-  const int keys = static_cast<int>(drawings.size());
+std::vector<std::vector<Eigen::Vector2d>> ArtworkRegions::contacts(const std::vector<std::vector<Outline>>& outlines) const {
+  const int keys = static_cast<int>(impl_->regions.size()), reference = impl_->reference;
+  const ArtworkRegionOptions& options = impl_->options;
   std::vector<std::vector<Eigen::Vector2d>> out;
-  if (keys < 2 || outlines.size() != drawings.size()) return out;
+  if (keys < 2 || outlines.size() != impl_->regions.size()) return out;
   std::vector<std::vector<Polyline>> loops(static_cast<size_t>(keys));  // [key]: outer loops and holes
   for (int k = 0; k < keys; ++k)
     for (const Outline& o : outlines[static_cast<size_t>(k)]) {
       loops[static_cast<size_t>(k)].push_back(o.outer);
       loops[static_cast<size_t>(k)].insert(loops[static_cast<size_t>(k)].end(), o.holes.begin(), o.holes.end());
     }
-  const std::vector<Regions> regions = segmentAll(drawings, options);
-  for (const std::vector<const Region*>& match : movedRegions(regions, reference, options)) {
+  for (size_t r = 0; r < impl_->moved.size(); ++r) {
     std::vector<std::vector<Contact>> found(static_cast<size_t>(keys));  // [key][contact]
-    for (int k = 0; k < keys; ++k) {
-      const Regions& r = regions[static_cast<size_t>(k)];
-      const int id = static_cast<int>(match[static_cast<size_t>(k)] - r.list.data());
-      found[static_cast<size_t>(k)] = contacts(r, id, loops[static_cast<size_t>(k)], options.contactReach);
-    }
+    for (int k = 0; k < keys; ++k)
+      found[static_cast<size_t>(k)] = outlineContacts(impl_->regions[static_cast<size_t>(k)], impl_->moved[r][static_cast<size_t>(k)],
+                                                      loops[static_cast<size_t>(k)], options.contactReach);
     const std::vector<Contact>& refContacts = found[static_cast<size_t>(reference)];
     bool same = !refContacts.empty();
     for (int k = 0; k < keys; ++k) same = same && found[static_cast<size_t>(k)].size() == refContacts.size();
@@ -252,7 +267,7 @@ std::vector<std::vector<Eigen::Vector2d>> artworkRegionContacts(const std::vecto
     // centroid, when that is the reference contact's nearest in turn and within 45 deg; then the
     // ends of the stretch each touches, first with first and last with last.
     const auto direction = [&](int k, const Contact& c) {
-      const Eigen::Vector2d d = c.middle - match[static_cast<size_t>(k)]->centroid;
+      const Eigen::Vector2d d = c.middle - impl_->region(r, k).centroid;
       return std::atan2(d.y(), d.x());
     };
     const auto turn = [](double a, double b) { return std::abs(std::remainder(a - b, 2 * M_PI)); };

@@ -8,6 +8,7 @@
 #include "meshing/tracing.h"
 
 #include <Eigen/Core>
+#include <memory>
 #include <vector>
 
 namespace ib {
@@ -20,28 +21,39 @@ struct ArtworkRegionOptions {
   double contactReach = 4;
 };
 
-// Points to pin, [key][pin] in drawing px: the centroid, in every key, of every region of the
-// reference key's drawing (fully opaque pixels of one colour, 4-connected, not touching the
-// transparent paper, its centroid on itself, not of the colour of the largest region, the fill,
-// whose pieces change shape with what is around them) that every other key has exactly once (the
-// same colour within twice the tolerance, area within a factor 2.5, centroid within 0.3 of the
-// shape's size; the second best at least 0.3 costlier), and that moved (centroid or area) in some
-// key. A centroid is kept when every key has it at least `clearance` px from transparent paper and
-// from every centroid kept before it. (The points at the ends of a region's axes as well, carried
-// by its moments, folded chick-squash's initial map near its feet; centroids alone do not.)
-std::vector<std::vector<Eigen::Vector2d>> artworkRegionPins(const std::vector<RgbaImage>& drawings, int reference,
-                                                            double clearance, const ArtworkRegionOptions& options = {});
+// The drawings' regions of flat colour, segmented and matched across keys once per build; what
+// the build pins and holds follows from them at each edge length it tries.
+class ArtworkRegions {
+ public:
+  // Segments every key's drawing and matches the reference key's regions in every other key: a
+  // region (fully opaque pixels of one colour, 4-connected, not touching the transparent paper, its
+  // centroid on itself, not of the colour of the largest region, the fill, whose pieces change
+  // shape with what is around them) that every other key has exactly once (the same colour within
+  // twice the tolerance, area within a factor 2.5, centroid within 0.3 of the shape's size; the
+  // second best at least 0.3 costlier), and that moved (centroid or area) in some key.
+  ArtworkRegions(const std::vector<RgbaImage>& drawings, int reference, const ArtworkRegionOptions& options = {});
+  ~ArtworkRegions();
+  ArtworkRegions(ArtworkRegions&&) noexcept;
+  ArtworkRegions& operator=(ArtworkRegions&&) noexcept;
 
-// Where those regions meet the outline: a region that moved (as artworkRegionPins matches them)
-// and comes within options.contactReach px of key k's traced `outlines[k]` (outer loops and
-// holes) at the same number of places in every key, each place paired across keys by its
-// direction from the region's centroid (the nearest both ways, within 45 deg): [contact][key],
-// points on the keys' loops (px): the two ends of the stretch of outline it touches, or its middle
-// where that stretch is shorter than 2 contactReach in some key. A stripe across a body meets the
-// outline at its two ends; knots there (SharedBoundaryOptions::artworkKnots) carry the stripe's
-// ends onto each other.
-std::vector<std::vector<Eigen::Vector2d>> artworkRegionContacts(const std::vector<RgbaImage>& drawings, int reference,
-                                                                const std::vector<std::vector<Outline>>& outlines,
-                                                                const ArtworkRegionOptions& options = {});
+  // Points to pin, [key][pin] in drawing px: the centroid of every matched region in every key,
+  // kept when every key has it at least `clearance` px from transparent paper and from every
+  // centroid kept before it. (The points at the ends of a region's axes as well, carried by its
+  // moments, folded chick-squash's initial map near its feet; centroids alone do not.)
+  std::vector<std::vector<Eigen::Vector2d>> pins(double clearance) const;
+
+  // Where the matched regions meet the outline: a region that comes within options.contactReach px
+  // of key k's traced `outlines[k]` (outer loops and holes) at the same number of places in every
+  // key, each place paired across keys by its direction from the region's centroid (the nearest
+  // both ways, within 45 deg): [contact][key], points on the keys' loops (px): the two ends of the
+  // stretch of outline it touches, or its middle where that stretch is shorter than 2 contactReach
+  // in some key. A stripe across a body meets the outline at its two ends; knots there
+  // (SharedBoundaryOptions::artworkKnots) carry the stripe's ends onto each other.
+  std::vector<std::vector<Eigen::Vector2d>> contacts(const std::vector<std::vector<Outline>>& outlines) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
 
 }  // namespace ib

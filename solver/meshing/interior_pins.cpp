@@ -89,9 +89,9 @@ std::vector<int> deepAnchors(const ReferenceMesh& mesh, const InteriorPins& pins
   return out;
 }
 
-KeyPoints regionPins(const Scene& scene, const std::vector<RgbaImage>& drawings, const std::vector<KeyShape>& shapes,
+KeyPoints regionPins(const Scene& scene, const ArtworkRegions& artwork, const std::vector<KeyShape>& shapes,
                      double edgeLength, const std::vector<Eigen::Vector2d>& clearOf, double clearance) {
-  KeyPoints pins = artworkRegionPins(drawings, scene.reference, kRegionClearance * edgeLength);
+  KeyPoints pins = artwork.pins(kRegionClearance * edgeLength);
   // None near an interior feature or its disc (within the clearance of its rim), a fold, an
   // outline or a cut.
   const KeySpec& reference = scene.keys[scene.reference];

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "core/png_image.h"
+#include "meshing/artwork_regions.h"
 #include "meshing/key_shape.h"
 #include "meshing/reference_mesh.h"
 #include "scene/scene.h"
@@ -41,7 +42,7 @@ InteriorPins interiorPins(const Scene& scene, const ReferenceMesh& mesh, double 
 // moved is carried onto itself.
 constexpr double kRegionClearance = 1.5;
 // None within `clearance` px of a point of clearOf (px, in any key: where a key folded before).
-KeyPoints regionPins(const Scene& scene, const std::vector<RgbaImage>& drawings, const std::vector<KeyShape>& shapes,
+KeyPoints regionPins(const Scene& scene, const ArtworkRegions& artwork, const std::vector<KeyShape>& shapes,
                      double edgeLength, const std::vector<Eigen::Vector2d>& clearOf = {}, double clearance = 0);
 // Adds the artwork's anchors (meshing/artwork_agreement.h: artworkAnchors) to pins, each held where
 // the reference key has it, in every key: what did not change in the drawings does not move.

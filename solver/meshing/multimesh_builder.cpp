@@ -21,6 +21,7 @@
 #include <filesystem>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <sstream>
 #include <tuple>
 
@@ -319,8 +320,11 @@ BuiltScene buildMultimesh(const Scene& scene, const MultimeshBuildOptions& optio
   if (scene.corners == CornerHandling::kVertices) cornerChain.push_back(CornerHandling::kPaired);
   if (scene.corners != CornerHandling::kOff) cornerChain.push_back(CornerHandling::kOff);
   const double firstEdgeLength = edgeLength;
-  // Under "artwork", where moved regions (a stripe) meet the outline in every key: knots.
-  const KeyPoints contacts = artwork ? artworkRegionContacts(drawings, scene.reference, built.outlines) : KeyPoints{};
+  // Under "artwork", the drawings' regions of flat colour matched across keys, once: pinned at each
+  // edge length, and knots where they meet the outline in every key (a stripe's ends).
+  const std::optional<ArtworkRegions> regionMatch =
+      artwork ? std::optional<ArtworkRegions>(ArtworkRegions(drawings, scene.reference)) : std::nullopt;
+  const KeyPoints contacts = regionMatch ? regionMatch->contacts(built.outlines) : KeyPoints{};
   std::vector<std::string> fallbacks;  // what folded, one entry per setting given up
   std::string failure;                 // the last fold: `key "k" near (x, y)`
   std::string failedKey;               // that key's name, quoted
@@ -348,7 +352,7 @@ BuiltScene buildMultimesh(const Scene& scene, const MultimeshBuildOptions& optio
       mo.maxEdgeLength = edgeLength;
       const KeyPoints regions =
           correspondence == OutlineCorrespondence::kArtwork
-              ? regionPins(scene, drawings, built.shapes, edgeLength, folds, kFoldClearance * edgeLength)
+              ? regionPins(scene, *regionMatch, built.shapes, edgeLength, folds, kFoldClearance * edgeLength)
               : KeyPoints{};
       ReferenceMesh mesh;
       try {

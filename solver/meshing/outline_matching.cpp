@@ -155,8 +155,7 @@ std::pair<int, double> arcFractionOf(const SharedBoundary& boundary, int key, co
   }
   if (kb.loops.empty()) return {-1, 0};
   const ArcLengthLoop& lp = kb.loops[loop];
-  const int i = static_cast<int>(best.at);
-  const double s = lp.parameterOfPoint(i) + (best.point - lp.points()[static_cast<size_t>(i)]).norm();
+  const double s = lp.parameterOf(best);
   for (int a : boundary.loopArcs[loop]) {
     const double along = std::fmod(s - kb.arcStarts[loop][boundary.arcs[a].indexInLoop] + 2 * lp.length(), lp.length());
     const double length = boundary.arcLength(key, a);

@@ -60,7 +60,7 @@ struct SharedBoundaryOptions {
   double shapeKnotClearance = 0;  // px; default 0
   // With kArtwork: points that correspond, [knot][key] (px, on or near each key's outline), such
   // as where a stripe drawn across the shape meets the outline in every key
-  // (artworkRegionContacts). Each becomes a knot held in every key where it lies on the same arc
+  // (ArtworkRegions::contacts). Each becomes a knot held in every key where it lies on the same arc
   // in every key, in the same order among the arc's knots, at least an edge length from them and
   // from the arc's ends; the others are left out. Default none.
   std::vector<std::vector<Eigen::Vector2d>> artworkKnots = {};
