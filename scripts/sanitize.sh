@@ -69,7 +69,7 @@ if [ "$kind" = address ]; then
 elif [ "$kind" = address-solver ]; then
   # Second walks over every bundled scene, through code that the other walks over every bundled
   # scene (the examples' builds and Comesh, the animation) and the exporter's own tests run under
-  # the sanitizers too: 840 s of test time there (2026-12-07).
+  # the sanitizers too: about 1,000 s of test time under the sanitizers (2026-12-07).
   second_walks=(
     "even spacing: every bundled asset"
     "previous map: a build from the previous build"

@@ -100,7 +100,7 @@ bool clearOfPaper(const Regions& image, const Eigen::Vector2d& p, double radius)
 // The reference's regions that every other key has once and that moved (ArtworkRegions):
 // [region][key], the index of the region matched in each key.
 std::vector<std::vector<int>> movedRegions(const std::vector<Regions>& regions, int reference,
-                                                     const ArtworkRegionOptions& options) {
+                                           const ArtworkRegionOptions& options) {
   const int keys = static_cast<int>(regions.size());
   const Regions& ref = regions[static_cast<size_t>(reference)];
   const double size = std::sqrt(ref.drawn), reach = 0.3 * size;
