@@ -8,6 +8,7 @@
 #include <catch2/catch.hpp>
 #include <chrono>
 #include <cmath>
+#include <map>
 #include <thread>
 
 namespace playtest {
@@ -70,6 +71,69 @@ int mismatches(const RgbaImage& shot, const RgbaImage& art, int tolerance, int* 
         }
       }
     }
+  return bad;
+}
+
+int drawnMismatches(const RgbaImage& shot, const RgbaImage& art, bool nearest, int tolerance, int* compared) {
+  const play::PixelRect canvas = play::canvasRect(kWidth, kHeight);
+  const render::ViewBox view = play::ViewNavigation().windowView({0, 0, double(art.width), double(art.height)}, canvas, kWidth, kHeight);
+  // Premultiplied texel (x, y) channel c; nothing beyond the drawing.
+  const auto texel = [&](int x, int y, int c) {
+    if (x < 0 || y < 0 || x >= art.width || y >= art.height) return 0.0;
+    const uint8_t* p = art.at(x, y);
+    return c == 3 ? double(p[3]) : p[c] * p[3] / 255.0;
+  };
+  // The drawing as the view samples it at each compared pixel (premultiplied RGBA), or nothing.
+  struct Sample {
+    int x, y;
+    double want[4];
+  };
+  std::vector<Sample> samples;
+  for (int py = 0; py < kHeight; ++py)
+    for (int px = 0; px < kWidth; ++px) {
+      if (underPanels(px + 0.5, py + 0.5) || !canvas.contains(px + 0.5, py + 0.5)) continue;
+      const double u = view.x0 + (px + 0.5) / kWidth * (view.x1 - view.x0);
+      const double v = view.y0 + (py + 0.5) / kHeight * (view.y1 - view.y0);
+      if (u < 0 || v < 0 || u > art.width || v > art.height) continue;  // the canvas only
+      Sample s{px, py, {}};
+      if (nearest) {
+        const double fu = u - std::floor(u), fv = v - std::floor(v);
+        if (fu < 0.02 || fu > 0.98 || fv < 0.02 || fv > 0.98) continue;
+        for (int c = 0; c < 4; ++c) s.want[c] = texel(int(std::floor(u)), int(std::floor(v)), c);
+      } else {
+        const double su = u - 0.5, sv = v - 0.5;
+        const int x0 = int(std::floor(su)), y0 = int(std::floor(sv));
+        const double fx = su - x0, fy = sv - y0;
+        const auto clamped = [&](int x, int y, int c) {
+          return texel(std::clamp(x, 0, art.width - 1), std::clamp(y, 0, art.height - 1), c);
+        };
+        for (int c = 0; c < 4; ++c)
+          s.want[c] = (1 - fy) * ((1 - fx) * clamped(x0, y0, c) + fx * clamped(x0 + 1, y0, c)) +
+                      fy * ((1 - fx) * clamped(x0, y0 + 1, c) + fx * clamped(x0 + 1, y0 + 1, c));
+      }
+      samples.push_back(s);
+    }
+  // The backdrop as presented: the commonest colour where the drawing has nothing.
+  std::map<std::array<int, 3>, int> seen;
+  for (const Sample& s : samples)
+    if (s.want[3] == 0) {
+      const uint8_t* p = shot.at(s.x, s.y);
+      ++seen[{p[0], p[1], p[2]}];
+    }
+  std::array<int, 3> backdrop{};
+  int most = 0;
+  for (const auto& [colour, count] : seen)
+    if (count > most) most = count, backdrop = colour;
+  int bad = 0;
+  *compared = static_cast<int>(samples.size());
+  for (const Sample& s : samples) {
+    const uint8_t* got = shot.at(s.x, s.y);
+    for (int c = 0; c < 3; ++c)
+      if (std::abs(got[c] - (s.want[c] + (1 - s.want[3] / 255) * backdrop[c])) > tolerance) {
+        ++bad;
+        break;
+      }
+  }
   return bad;
 }
 

@@ -43,6 +43,14 @@ ib::RgbaImage drawing(const std::string& name);
 // transparent ones to the backdrop's grey; the readouts' and banner's places are skipped.
 int mismatches(const ib::RgbaImage& shot, const ib::RgbaImage& art, int tolerance, int* compared);
 
+// Compares every pixel of the screenshot's picture (the canvas outside the readouts and banner)
+// with `art` (a key's drawing on the scene's 128 x 128 canvas) as the player's view maps it, edges
+// included: the drawing sampled at the pixel's centre (nearest texel, or bilinear in premultiplied
+// alpha), over the backdrop as presented (the commonest colour where the drawing has nothing). Under nearest sampling, pixels whose centre falls within 0.02
+// texel of a texel's side (either texel is right) are skipped. Returns how many are off by more
+// than `tolerance` /255 in a channel.
+int drawnMismatches(const ib::RgbaImage& shot, const ib::RgbaImage& art, bool nearest, int tolerance, int* compared);
+
 // Pixels of the picture (the canvas outside the readouts) that differ by more than 32/255.
 int pictureDifference(const ib::RgbaImage& a, const ib::RgbaImage& b);
 

@@ -1,6 +1,6 @@
 // The benchmarks that need the engine: `inbetween bench render` headless on lavapipe, and (under
 // Xvfb, "[.window]", run by ctest through xvfb-run) `inbetween bench play` in the player's window;
-// `inbetween bench ghost` on scenes written here.
+// `inbetween bench ghost` on scenes written here; `inbetween bench keys` on bundled scenes.
 // Every stdout line is one JSON object of the case, with the fields its --help documents
 // (apps/bench/bench_render.cpp, bench_play.cpp) and positive times.
 #include "cli_support.h"
@@ -109,4 +109,32 @@ TEST_CASE("cli: bench ghost finds no ghost where the keys are one drawing, and o
   CHECK(tail.at("drawn_pixels").get<int>() < same.at("drawn_pixels").get<int>());
   CHECK(tail.at("drawn_mean").get<double>() > 5 * same.at("drawn_mean").get<double>());  // 17.6 measured
   std::filesystem::remove_all(folder);
+}
+
+TEST_CASE("cli: bench keys finds every bundled key it renders to be its drawing, at its size and twice it, and writes the frames it was asked for") {
+  const std::filesystem::path frames = std::filesystem::temp_directory_path() / "inbetween-cli-bench-keys";
+  std::filesystem::remove_all(frames);
+  const CommandRun run = inbetween({"bench", "keys", "--scenes", "slime-sprite,square-arch-notch", "--frames", frames.string()});
+  INFO(run.output);
+  REQUIRE(run.code == 0);
+  const std::vector<Json> lines = jsonLines(run.out);
+  REQUIRE(lines.size() == 4);  // two scenes, scales 1 and 2
+  for (const Json& line : lines) {
+    CHECK(line.at("bench") == "keys");
+    CHECK(line.at("over_2") == 0);
+    CHECK(line.at("worst").get<int>() <= 2);
+    CHECK(line.at("pixels").get<long long>() >= 2 * 128 * 128);
+  }
+  CHECK(lines[0].at("scene") == "slime-sprite");
+  CHECK(lines[0].at("sampling") == "linear");
+  CHECK(lines[0].at("keys") == 3);
+  CHECK(lines[1].at("scale") == 2);
+  CHECK(lines[2].at("sampling") == "nearest");  // square-arch-notch is pixel art
+  CHECK(std::filesystem::exists(frames / "slime-sprite_key_2_x2.png"));
+  CHECK(std::filesystem::exists(frames / "square-arch-notch_key_1_x1.png"));
+  std::filesystem::remove_all(frames);
+
+  const CommandRun bad = inbetween({"bench", "keys", "--scales", "1,9"});
+  CHECK(bad.code == 2);
+  CHECK_THAT(bad.err, Catch::Contains("scales"));
 }

@@ -52,6 +52,21 @@ TEST_CASE("play: --weights at e_i shows key i's drawing, and a blend shows neith
   const RgbaImage arch = screenshot("e1", "--weights 1=1");  // by index
   CHECK(mismatches(arch, drawing("arch.png"), 3, &compared) == 0);
   CHECK(compared > 4000);
+  // Keys are the drawings: every pixel of the picture, the antialiased outline and the notch's
+  // sides included, is the drawing as the view magnifies it (nearest: the scene is pixel art).
+  for (const auto& [shot, name] : {std::pair{&square, "square.png"}, std::pair{&arch, "arch.png"}}) {
+    const int off = drawnMismatches(*shot, drawing(name), true, 3, &compared);
+    INFO(name << ": " << off << " of " << compared << " pixels of the picture differ from the drawing");
+    CHECK(off == 0);
+    CHECK(compared > 100000);
+  }
+  // And an antialiased drawing, filtered linearly: slime-sprite's squash key, soft outline and all.
+  const std::string slime = std::string(INBETWEEN_ASSETS) + "/slime-sprite/";
+  const RgbaImage squash = screenshot("slime-squash", "--weights squash=1", 1, slime + "scene.json");
+  const int off = drawnMismatches(squash, readPng(slime + "squash.png"), false, 3, &compared);
+  INFO("slime-sprite squash: " << off << " of " << compared << " pixels of the picture differ from the drawing");
+  CHECK(off == 0);
+  CHECK(compared > 100000);
   const RgbaImage blend = screenshot("blend", "--weights square=0.5,arch=0.5");
   CHECK(pictureDifference(blend, square) > 500);
   CHECK(pictureDifference(blend, arch) > 500);

@@ -59,7 +59,7 @@ std::vector<char> nearOutline(int width, int height, const std::vector<Edge>& ou
 
 }  // namespace
 
-TEST_CASE("render: every frame of every bundled scene is opaque more than 1.5 px inside the mesh's silhouette, transparent more than 1.5 px outside, antialiased between") {
+TEST_CASE("render: every frame of every bundled scene away from its keys is opaque more than 1.5 px inside the mesh's silhouette, transparent more than 1.5 px outside, antialiased between") {
   const vk::VulkanContext context = ib::test::validatedContext();
   int framesChecked = 0;
   for (const std::string& file : ::test::bundledSceneFiles(INBETWEEN_ASSETS)) {
@@ -90,6 +90,8 @@ TEST_CASE("render: every frame of every bundled scene is opaque more than 1.5 px
     Eigen::Vector2d lowestAt(0, 0);
     while (!stream.done()) {
       const AnimationFrame frame = stream.next();
+      // At and near a key the frame is its drawing, gaps and soft edges as drawn (test_render_assets.cpp).
+      if (keyness(frame.weights) > 0) continue;
       FrameDraw draw = ib::test::frameOf(frame.x, frame.weights, {0, 0, width, height});
       draw.heldPairs = &frame.heldPairs;
       const RgbaImage image = artRenderer.render(draw), covered = coverageRenderer.render(draw);

@@ -44,7 +44,10 @@ OffscreenOptions squareTarget(int size) {
 TEST_CASE("renderer: a textured square shows its texture within 2/255 and covers its area within 1%") {
   const vk::VulkanContext context = test::validatedContext();
   const Multimesh mesh = squareGrid(5, 8, 8, 48, 2);
-  const RenderMesh scene = renderMeshOf(mesh, {paintedImage(64, 64, quadrant), paintedImage(64, 64, [](int, int) {
+  // Key 0 draws the quadrants where its mesh is, [8, 56)^2, and nothing around them, as a traced
+  // drawing does (at and near a key its drawing shows as drawn, also past the mesh's edge).
+  const auto square = [](int px, int py) { return px >= 8 && px < 56 && py >= 8 && py < 56 ? quadrant(px, py) : Colour{0, 0, 0, 0}; };
+  const RenderMesh scene = renderMeshOf(mesh, {paintedImage(64, 64, square), paintedImage(64, 64, [](int, int) {
                                                  return Colour{255, 255, 255, 255};
                                                })});
   OffscreenRenderer renderer(context, scene, squareTarget(128));

@@ -95,6 +95,13 @@ std::filesystem::path sceneWithEdgeLength(const std::filesystem::path& file, dou
   return dir / "scene.json";
 }
 
+SceneMultimesh builtFromDrawings(const Scene& scene, int threads, const std::string& name, cli::Progress& progress, double share) {
+  SceneMultimeshOptions options;
+  options.useCache = false;
+  options.threads = threads;
+  return sceneMultimesh(scene, options, [&](const std::string& stage, double f) { progress.update(name + ": " + stage, share * f); });
+}
+
 void showStatus(const std::string& text) {
   if (isatty(STDERR_FILENO)) std::fprintf(stderr, "\r\033[K%s", text.c_str());
 }
@@ -104,7 +111,7 @@ namespace {
 std::vector<Benchmark> benchmarks() {
   return {interpBenchmark(), comeshBenchmark(), animBenchmark(), meshBenchmark(),
 #ifdef INBETWEEN_WITH_ENGINE
-          renderBenchmark(), playBenchmark(), editBenchmark(), ghostBenchmark(),
+          renderBenchmark(), playBenchmark(), editBenchmark(), ghostBenchmark(), keysBenchmark(),
 #endif
           cutBenchmark(), popsBenchmark(), shapeBenchmark(), examplesBenchmark()};
 }

@@ -4,6 +4,8 @@
 #pragma once
 
 #include "cli.h"
+#include "pipeline/scene_multimesh.h"
+#include "progress.h"
 
 #include <nlohmann/json.hpp>
 
@@ -46,6 +48,7 @@ Benchmark renderBenchmark();
 Benchmark playBenchmark();
 Benchmark editBenchmark();
 Benchmark ghostBenchmark();
+Benchmark keysBenchmark();
 #endif
 Benchmark cutBenchmark();
 Benchmark popsBenchmark();
@@ -88,6 +91,11 @@ double edgeLengthOption(const cli::Arguments& arguments);
 // A copy of the scene's folder in the temporary folder with `edge_length` replaced (a larger mesh
 // of the same drawings).
 std::filesystem::path sceneWithEdgeLength(const std::filesystem::path& file, double edgeLength, const std::string& bench);
+
+// `scene`'s multimesh built from its drawings as `inbetween mesh` builds it, never from a cache (a
+// .ibmesh left beside the scene must not change the figures), on `threads` solver threads (0: all
+// cores); its stages shown on `progress` as `name: stage`, over the first `share` of the line.
+SceneMultimesh builtFromDrawings(const Scene& scene, int threads, const std::string& name, cli::Progress& progress, double share);
 
 // One line of status on stderr, rewritten in place, when stderr is a terminal; "" clears it.
 void showStatus(const std::string& text);

@@ -81,11 +81,7 @@ void run(const cli::Arguments& a, const BenchOutput& output) {
     const Scene scene = loadScene(file.string());
     const std::string name = file.parent_path().filename().string();
     cli::Progress progress;
-    SceneMultimeshOptions meshOptions;
-    meshOptions.useCache = false;
-    meshOptions.threads = threads;
-    const SceneMultimesh built =
-        sceneMultimesh(scene, meshOptions, [&](const std::string& stage, double f) { progress.update(name + ": " + stage, 0.3 * f); });
+    const SceneMultimesh built = builtFromDrawings(scene, threads, name, progress, 0.3);
     std::vector<RgbaImage> drawings = readKeyDrawings(scene);
     const AgreementMask all = agreement(drawings);
     AgreementOptions drawnOnly;

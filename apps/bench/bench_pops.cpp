@@ -54,10 +54,7 @@ void run(const cli::Arguments& a, const BenchOutput& output) {
     if (cuts == 0 && only.empty() && !a.flag("all")) continue;
     const std::string name = file.parent_path().filename().string();
     cli::Progress progress;
-    SceneMultimeshOptions meshOptions;
-    meshOptions.useCache = false;
-    meshOptions.threads = threads;
-    const auto built = sceneMultimesh(scene, meshOptions, [&](const std::string& stage, double f) { progress.update(name + ": " + stage, f); });
+    const auto built = builtFromDrawings(scene, threads, name, progress, 1);
     const Multimesh& mesh = *built.multimesh;
     FrameOptions frameOptions;
     frameOptions.solver.threads = threads;

@@ -69,6 +69,28 @@ GpuBuffer uploadBuffer(const VulkanContext& context, VkCommandPool pool, const v
   return out;
 }
 
+VkImageAspectFlags aspectOf(VkFormat format) {
+  switch (format) {
+    case VK_FORMAT_S8_UINT:
+      return VK_IMAGE_ASPECT_STENCIL_BIT;
+    case VK_FORMAT_D16_UNORM_S8_UINT:
+    case VK_FORMAT_D24_UNORM_S8_UINT:
+    case VK_FORMAT_D32_SFLOAT_S8_UINT:
+      return VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT;
+    default:
+      return VK_IMAGE_ASPECT_COLOR_BIT;
+  }
+}
+
+VkFormat stencilFormat(VkPhysicalDevice physical) {
+  for (VkFormat format : {VK_FORMAT_S8_UINT, VK_FORMAT_D24_UNORM_S8_UINT, VK_FORMAT_D32_SFLOAT_S8_UINT, VK_FORMAT_D16_UNORM_S8_UINT}) {
+    VkFormatProperties properties;
+    vkGetPhysicalDeviceFormatProperties(physical, format, &properties);
+    if (properties.optimalTilingFeatures & VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT) return format;
+  }
+  throw VulkanError("choosing a stencil format: the device draws into none", VK_ERROR_FORMAT_NOT_SUPPORTED);
+}
+
 GpuImage createImage(const VulkanContext& context, const ImageSpec& spec, const char* what) {
   VkImageCreateInfo info{};
   info.sType = VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO;
@@ -98,7 +120,7 @@ GpuImage createImage(const VulkanContext& context, const ImageSpec& spec, const 
   view.image = handle;
   view.viewType = spec.layers > 1 || spec.arrayView ? VK_IMAGE_VIEW_TYPE_2D_ARRAY : VK_IMAGE_VIEW_TYPE_2D;
   view.format = spec.format;
-  view.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, spec.mipLevels, 0, spec.layers};
+  view.subresourceRange = {aspectOf(spec.format), 0, spec.mipLevels, 0, spec.layers};
   VkImageView viewHandle = VK_NULL_HANDLE;
   check(vkCreateImageView(context.device(), &view, nullptr, &viewHandle), (std::string("creating a view of ") + what).c_str());
   out.view = ImageViewObject(context.device(), viewHandle);

@@ -51,6 +51,13 @@ struct ImageSpec {
 };
 GpuImage createImage(const VulkanContext& context, const ImageSpec& spec, const char* what);
 
+// The aspects of `format`: stencil (and depth) for the depth/stencil formats, colour otherwise.
+VkImageAspectFlags aspectOf(VkFormat format);
+
+// The stencil format this device draws into with optimal tiling: S8_UINT where it can, else a
+// combined depth/stencil format. Throws VulkanError when it has none.
+VkFormat stencilFormat(VkPhysicalDevice physical);
+
 // Records commands with `record`, submits them to the context's queue and waits for them to finish.
 void submitAndWait(const VulkanContext& context, VkCommandPool pool, const std::function<void(VkCommandBuffer)>& record);
 

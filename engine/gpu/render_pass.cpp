@@ -6,7 +6,7 @@
 
 namespace ib::vk {
 
-RenderPassObject createColorRenderPass(VkDevice device, VkFormat format, VkSampleCountFlagBits samples,
+RenderPassObject createColorRenderPass(VkDevice device, VkFormat format, VkFormat stencil, VkSampleCountFlagBits samples,
                                        VkImageLayout finalLayout) {
   const bool multisampled = samples != VK_SAMPLE_COUNT_1_BIT;
   std::vector<VkAttachmentDescription> attachments;
@@ -28,22 +28,38 @@ RenderPassObject createColorRenderPass(VkDevice device, VkFormat format, VkSampl
     resolve.finalLayout = finalLayout;
     attachments.push_back(resolve);
   }
+  VkAttachmentDescription stencilAttachment{};
+  stencilAttachment.format = stencil;
+  stencilAttachment.samples = samples;
+  stencilAttachment.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;  // the depth of a combined format: unused
+  stencilAttachment.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+  stencilAttachment.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+  stencilAttachment.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+  stencilAttachment.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+  stencilAttachment.finalLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
+  attachments.push_back(stencilAttachment);
   VkAttachmentReference colourRef{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
   VkAttachmentReference resolveRef{1, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
+  VkAttachmentReference stencilRef{static_cast<uint32_t>(attachments.size() - 1), VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
   VkSubpassDescription subpass{};
   subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
   subpass.colorAttachmentCount = 1;
   subpass.pColorAttachments = &colourRef;
   subpass.pResolveAttachments = multisampled ? &resolveRef : nullptr;
+  subpass.pDepthStencilAttachment = &stencilRef;
   // In: earlier use of the images (a previous frame's copy or presentation) before this write.
   // Out: the stored image is then copied to the host (transfer) or presented.
   std::array<VkSubpassDependency, 2> dependencies{};
   dependencies[0].srcSubpass = VK_SUBPASS_EXTERNAL;
   dependencies[0].dstSubpass = 0;
-  dependencies[0].srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT;
-  dependencies[0].srcAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
-  dependencies[0].dstStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
-  dependencies[0].dstAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+  // The stencil: the previous frame's tests and writes of the same image before this clear.
+  dependencies[0].srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT |
+                                 VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
+  dependencies[0].srcAccessMask = VK_ACCESS_TRANSFER_READ_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
+  dependencies[0].dstStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT |
+                                 VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
+  dependencies[0].dstAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT |
+                                  VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
   dependencies[1].srcSubpass = 0;
   dependencies[1].dstSubpass = VK_SUBPASS_EXTERNAL;
   dependencies[1].srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
@@ -64,10 +80,11 @@ RenderPassObject createColorRenderPass(VkDevice device, VkFormat format, VkSampl
 }
 
 FramebufferObject createFramebuffer(VkDevice device, VkRenderPass pass, VkImageView msaaView, VkImageView targetView,
-                                    VkExtent2D extent) {
+                                    VkImageView stencilView, VkExtent2D extent) {
   std::vector<VkImageView> views;
   if (msaaView != VK_NULL_HANDLE) views.push_back(msaaView);
   views.push_back(targetView);
+  views.push_back(stencilView);
   VkFramebufferCreateInfo info{};
   info.sType = VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO;
   info.renderPass = pass;
@@ -83,15 +100,19 @@ FramebufferObject createFramebuffer(VkDevice device, VkRenderPass pass, VkImageV
 
 void beginRenderPass(VkCommandBuffer cmd, VkRenderPass pass, VkFramebuffer framebuffer, VkExtent2D extent,
                      const std::array<float, 4>& clear) {
-  VkClearValue clearValue{};
-  for (int c = 0; c < 4; ++c) clearValue.color.float32[c] = clear[c];
+  // Colour, resolve (not cleared: loaded as don't-care) and stencil; where there is no resolve the
+  // stencil's value sits at index 1 and reads the same.
+  VkClearValue clearValues[3]{};
+  for (int c = 0; c < 4; ++c) clearValues[0].color.float32[c] = clear[c];
+  clearValues[1].depthStencil = {1.0f, 0};
+  clearValues[2].depthStencil = {1.0f, 0};
   VkRenderPassBeginInfo begin{};
   begin.sType = VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO;
   begin.renderPass = pass;
   begin.framebuffer = framebuffer;
   begin.renderArea = {{0, 0}, extent};
-  begin.clearValueCount = 1;
-  begin.pClearValues = &clearValue;
+  begin.clearValueCount = 3;
+  begin.pClearValues = clearValues;
   vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
   VkViewport viewport{0, 0, static_cast<float>(extent.width), static_cast<float>(extent.height), 0, 1};
   VkRect2D scissor{{0, 0}, extent};

@@ -1,5 +1,7 @@
 // The render pass every target draws with: one multisampled colour attachment resolved into a
-// single-sampled image (the offscreen image or a swapchain image), cleared at the start.
+// single-sampled image (the offscreen image or a swapchain image), and a stencil attachment of the
+// same sample count, both cleared at the start (the stencil to 0). The stencil lets the keys' rims
+// (render::KeyRim) draw only where their own frame has drawn nothing yet.
 #pragma once
 
 #include "gpu/vulkan_object.h"
@@ -8,15 +10,17 @@
 
 namespace ib::vk {
 
-// samples == 1: one attachment, stored directly. samples > 1: attachment 0 multisampled
-// (not stored), attachment 1 its resolve. The stored image ends in `finalLayout`
-// (VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL for read-back, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR for a window).
-RenderPassObject createColorRenderPass(VkDevice device, VkFormat format, VkSampleCountFlagBits samples,
+// samples == 1: the colour attachment, stored directly, then the stencil. samples > 1: attachment 0
+// multisampled (not stored), attachment 1 its resolve, attachment 2 the stencil (not stored). The
+// stored image ends in `finalLayout` (VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL for read-back,
+// VK_IMAGE_LAYOUT_PRESENT_SRC_KHR for a window). `stencil`: its format (stencilFormat).
+RenderPassObject createColorRenderPass(VkDevice device, VkFormat format, VkFormat stencil, VkSampleCountFlagBits samples,
                                        VkImageLayout finalLayout);
 
-// A framebuffer over `msaaView` (may be VK_NULL_HANDLE when samples == 1) and `targetView`.
+// A framebuffer over `msaaView` (may be VK_NULL_HANDLE when samples == 1), `targetView` and
+// `stencilView`, in createColorRenderPass's order.
 FramebufferObject createFramebuffer(VkDevice device, VkRenderPass pass, VkImageView msaaView, VkImageView targetView,
-                                    VkExtent2D extent);
+                                    VkImageView stencilView, VkExtent2D extent);
 
 // Begins `pass` on `framebuffer`, clearing to `clear` (premultiplied RGBA), with viewport and
 // scissor covering `extent`.

@@ -90,7 +90,14 @@ void Swapchain::build(VkExtent2D size, VkRenderPass pass, VkSampleCountFlagBits 
       spec.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT;
       out.msaa = createImage(*context_, spec, "the window's multisampled colour image");
     }
-    out.framebuffer = createFramebuffer(device, pass, out.msaa.view ? out.msaa.view.get() : VK_NULL_HANDLE, out.view.get(), extent_);
+    ImageSpec stencil;
+    stencil.extent = extent_;
+    stencil.format = stencilFormat(context_->physicalDevice());
+    stencil.samples = samples;
+    stencil.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT;
+    out.stencil = createImage(*context_, stencil, "the window's stencil image");
+    out.framebuffer = createFramebuffer(device, pass, out.msaa.view ? out.msaa.view.get() : VK_NULL_HANDLE, out.view.get(),
+                                        out.stencil.view.get(), extent_);
     out.renderFinished = createSemaphore(device);
     images_.push_back(std::move(out));
   }

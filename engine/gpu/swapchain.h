@@ -16,6 +16,7 @@ struct SwapchainImage {
   VkImage image = VK_NULL_HANDLE;  // owned by the swapchain
   ImageViewObject view;
   GpuImage msaa;                   // absent when samples == 1
+  GpuImage stencil;                // the render pass's stencil, `samples` samples
   FramebufferObject framebuffer;
   SemaphoreObject renderFinished;  // signalled by the frame drawn into this image, waited on by present
   VkFence inFlight = VK_NULL_HANDLE;  // the fence of the frame last drawn into it (not owned)

@@ -85,6 +85,14 @@ RenderMesh renderMeshOf(const Multimesh& mesh, std::vector<RgbaImage> artwork, s
     if (f < 0 || f >= out.vertexCount) throw std::invalid_argument("render: feature vertex " + std::to_string(f) + " is not in the mesh");
   out.features = std::move(features);
   out.inks = cutInksOf(mesh, artwork);
+  out.drawings = artwork;
+  out.rim = keyRimOf(mesh);
+  for (int k = 0; k < mesh.keyCount(); ++k) {
+    Eigen::MatrixX2f uv = rimPoints(out.rim, mesh.keyPositions(k)).cast<float>();
+    uv.col(0) /= static_cast<float>(artwork[k].width);
+    uv.col(1) /= static_cast<float>(artwork[k].height);
+    out.rimUV.push_back(std::move(uv));
+  }
   // Each key's on its own, in parallel; an exception (out of memory) is rethrown here.
   std::exception_ptr failed;
 #pragma omp parallel for schedule(dynamic)
@@ -99,6 +107,12 @@ RenderMesh renderMeshOf(const Multimesh& mesh, std::vector<RgbaImage> artwork, s
   if (failed) std::rethrow_exception(failed);
   out.artwork = std::move(artwork);
   return out;
+}
+
+std::vector<RgbaImage> textureLayers(const RenderMesh& mesh) {
+  std::vector<RgbaImage> layers = mesh.artwork;
+  layers.insert(layers.end(), mesh.drawings.begin(), mesh.drawings.end());
+  return layers;
 }
 
 CutWeld weldCuts(const Eigen::MatrixX2d& x, const CutSides& cutSides, double pixelsPerUnit, const CutWeldOptions& options,

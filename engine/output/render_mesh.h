@@ -6,6 +6,7 @@
 #include "core/png_image.h"
 #include "multimesh/multimesh.h"
 #include "output/cut_ink.h"
+#include "output/key_rim.h"
 #include "output/silhouette_artwork.h"
 #include "output/texture_levels.h"
 
@@ -36,13 +37,17 @@ struct RenderMesh {
   std::vector<RgbaImage> artwork;                // [key]: the drawing as textured, straight alpha,
                                                  // its band along the mesh boundary as opaque as
                                                  // its interior (silhouette_artwork.h)
+  std::vector<RgbaImage> drawings;               // [key]: the drawing as drawn, straight alpha, shown
+                                                 // at and near the key (key_rim.h)
+  KeyRim rim;                                    // triangles outside the boundary carrying the drawings' edges
+  std::vector<Eigen::MatrixX2f> rimUV;           // [key]: rim points in key positions / drawing size
   std::vector<Edge> edges;                       // every mesh edge once (wireframe)
   std::vector<std::vector<Edge>> cohesiveEdges;  // [key]: both edges of each of C_i's pairs
   CutSides cutSides;                             // every key's cohesive pairs, for weldCuts
   CutInks inks;                                  // the drawings' outline ink, drawn where cuts open
   std::vector<int> features;                     // vertices marked as features
-  // The artwork as the GPU samples it (textureLevels(artwork)), when made beforehand, e.g. off a
-  // window's thread; null: the renderer makes it from `artwork` when it uploads.
+  // The artwork as the GPU samples it (textureLevels(textureLayers(mesh))), when made beforehand,
+  // e.g. off a window's thread; null: the renderer makes it when it uploads.
   std::shared_ptr<const TextureLevels> texture;
 };
 
@@ -52,6 +57,9 @@ struct RenderMesh {
 // does not match the keys, an image is empty or a feature is not a vertex.
 RenderMesh renderMeshOf(const Multimesh& mesh, std::vector<RgbaImage> artwork, std::vector<int> features = {},
                         const SilhouetteOptions& silhouette = {});
+
+// The texture's layers: `artwork` (keys 0..m-1), then `drawings` (layers m..2m-1).
+std::vector<RgbaImage> textureLayers(const RenderMesh& mesh);
 
 // Where the solver glues a cut, its two sides lie within a small fraction of a pixel of each other,
 // and the keys that draw the cut open have antialiased, partly transparent texels along it. Drawn

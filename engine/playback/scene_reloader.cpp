@@ -130,7 +130,7 @@ std::shared_ptr<const render::RenderMesh> playerRenderMesh(const Scene& scene, c
                                                            const std::vector<RgbaImage>& drawings, std::vector<int> features) {
   render::RenderMesh out = render::renderMeshOf(mesh, drawings, std::move(features));
   if (!scene.cutInk) out.inks = {};
-  out.texture = std::make_shared<const render::TextureLevels>(render::textureLevels(out.artwork));
+  out.texture = std::make_shared<const render::TextureLevels>(render::textureLevels(render::textureLayers(out)));
   return std::make_shared<const render::RenderMesh>(std::move(out));
 }
 

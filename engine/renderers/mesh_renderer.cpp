@@ -50,8 +50,11 @@ void pushVertex(vk::OverlayVertex*& out, double x, double y, const float colour[
 MeshRenderer::MeshRenderer(const vk::VulkanContext& context, VkCommandPool pool, const RenderMesh& mesh,
                            std::shared_ptr<const vk::RendererPipelines> pipelines, int slots)
     : vertexCount_(mesh.vertexCount),
+      rimPoints_(static_cast<int>(mesh.rim.points.size())),
       keyCount_(static_cast<int>(mesh.keyUV.size())),
       indexCount_(static_cast<uint32_t>(3 * mesh.triangles.size())),
+      rimIndexCount_(static_cast<uint32_t>(3 * mesh.rim.triangles.size())),
+      rim_(mesh.rim),
       edges_(mesh.edges),
       cohesiveEdges_(mesh.cohesiveEdges),
       cutSides_(mesh.cutSides),
@@ -61,15 +64,21 @@ MeshRenderer::MeshRenderer(const vk::VulkanContext& context, VkCommandPool pool,
   if (!pipelines_) throw std::invalid_argument("render: no pipelines");
   if (keyCount_ == 0 || vertexCount_ == 0 || mesh.triangles.empty()) throw std::invalid_argument("render: the mesh is empty");
   VkDevice device = context.device();
-  artwork_ = mesh.texture ? vk::uploadArtwork(context, pool, *mesh.texture) : vk::uploadArtwork(context, pool, mesh.artwork);
-  // UVs vertex-major (n x m vec2), scaled from each drawing's size to the shared layer size.
-  std::vector<float> uv(2 * static_cast<size_t>(vertexCount_) * keyCount_);
+  if (mesh.drawings.size() != mesh.artwork.size() || mesh.rimUV.size() != mesh.keyUV.size())
+    throw std::invalid_argument("render: the mesh's drawings or rim do not match its keys");
+  artwork_ = mesh.texture ? vk::uploadArtwork(context, pool, *mesh.texture) : vk::uploadArtwork(context, pool, textureLayers(mesh));
+  // UVs vertex-major ((n + rim points) x m vec2), scaled from each drawing's size to the shared layer size.
+  const int points = vertexCount_ + rimPoints_;
+  std::vector<float> uv(2 * static_cast<size_t>(points) * keyCount_);
   for (int k = 0; k < keyCount_; ++k) {
     const float su = static_cast<float>(mesh.artwork[k].width) / artwork_.layerSize.width;
     const float sv = static_cast<float>(mesh.artwork[k].height) / artwork_.layerSize.height;
-    for (int v = 0; v < vertexCount_; ++v) {
-      uv[2 * (static_cast<size_t>(v) * keyCount_ + k)] = mesh.keyUV[k](v, 0) * su;
-      uv[2 * (static_cast<size_t>(v) * keyCount_ + k) + 1] = mesh.keyUV[k](v, 1) * sv;
+    for (int v = 0; v < points; ++v) {
+      const bool onRim = v >= vertexCount_;
+      const Eigen::MatrixX2f& from = onRim ? mesh.rimUV[k] : mesh.keyUV[k];
+      const int row = onRim ? v - vertexCount_ : v;
+      uv[2 * (static_cast<size_t>(v) * keyCount_ + k)] = from(row, 0) * su;
+      uv[2 * (static_cast<size_t>(v) * keyCount_ + k) + 1] = from(row, 1) * sv;
     }
   }
   // Host-visible, written in place: no copy on the queue for the window to wait on after a reload.
@@ -77,6 +86,8 @@ MeshRenderer::MeshRenderer(const vk::VulkanContext& context, VkCommandPool pool,
   std::memcpy(uvs_.mapped, uv.data(), uv.size() * sizeof(float));
   std::vector<uint32_t> index;
   for (const Triangle& t : mesh.triangles)
+    for (int c : t) index.push_back(static_cast<uint32_t>(c));
+  for (const Triangle& t : mesh.rim.triangles)
     for (int c : t) index.push_back(static_cast<uint32_t>(c));
   indices_ = vk::createBuffer(context, index.size() * sizeof(uint32_t), VK_BUFFER_USAGE_INDEX_BUFFER_BIT, true,
                               "the index buffer");
@@ -114,7 +125,7 @@ MeshRenderer::MeshRenderer(const vk::VulkanContext& context, VkCommandPool pool,
   size_t cohesive = 0;
   for (const auto& c : cohesiveEdges_) cohesive += c.size();
   overlayCapacity_ = 2 * (edges_.size() + cohesive) + 6 * features_.size();
-  const VkDeviceSize bytes = (1 + kMaxOnionSkins) * static_cast<VkDeviceSize>(vertexCount_) * sizeof(vk::ArtworkVertex) +
+  const VkDeviceSize bytes = (1 + kMaxOnionSkins) * static_cast<VkDeviceSize>(points) * sizeof(vk::ArtworkVertex) +
                              std::max<VkDeviceSize>(1, overlayCapacity_) * sizeof(vk::OverlayVertex);
   for (int s = 0; s < slots; ++s)
     streams_.push_back(vk::createBuffer(context, bytes, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, true, "a vertex stream buffer"));
@@ -143,13 +154,17 @@ MeshRenderer::Active MeshRenderer::activeKeys(const Eigen::VectorXd& weights) co
 
 void MeshRenderer::drawArtwork(VkCommandBuffer cmd, const float view[4], double pixelsPerUnit, const Eigen::MatrixX2d& x,
                                const Eigen::VectorXd& weights, const std::vector<char>* heldPairs, const float tint[4],
-                               int slot, VkDeviceSize& offset) {
+                               int slot, uint32_t stencil, VkDeviceSize& offset) {
   if (x.rows() != vertexCount_)
     throw std::invalid_argument("render: " + std::to_string(x.rows()) + " positions for " + std::to_string(vertexCount_) + " vertices");
   if (!x.allFinite()) throw std::invalid_argument("render: positions are not finite");
   const Active active = activeKeys(weights);
   if (active.count == 0) return;  // nothing has weight: nothing to draw
-  const CutWeld weld = weldCuts(x, cutSides_, pixelsPerUnit, {}, heldPairs);
+  // At and near a key its drawing is the truth: a cut it draws a hair open stays so. The weld fades
+  // out as the keys' own drawings fade in (keyness), and is gone at w = e_i.
+  const double shown = keyness(Eigen::Map<const Eigen::VectorXf>(active.weights, active.count).cast<double>());
+  CutWeld weld = weldCuts(x, cutSides_, pixelsPerUnit, {}, heldPairs);
+  if (shown > 0) weld.positions += shown * (x - weld.positions);
   const InkFrame ink = inkFrame(inks_, x, weld.closure, weights, pixelsPerUnit);
   auto* out = reinterpret_cast<vk::ArtworkVertex*>(static_cast<char*>(streams_[slot].mapped) + offset);
   for (int v = 0; v < vertexCount_; ++v) {
@@ -169,14 +184,34 @@ void MeshRenderer::drawArtwork(VkCommandBuffer cmd, const float view[4], double 
   std::copy(active.layers, active.layers + kMaxActiveKeys, push.layers);
   push.activeCount = active.count;
   push.keyCount = keyCount_;
+  push.keyness = static_cast<float>(shown);
+  // The rim's points, offsets of the welded boundary (no seam, no ink).
+  const bool rim = push.keyness > 0 && rimIndexCount_ > 0;
+  if (rim) {
+    const Eigen::MatrixX2d points = rimPoints(rim_, weld.positions);
+    for (int j = 0; j < rimPoints_; ++j) {
+      vk::ArtworkVertex& o = out[vertexCount_ + j];
+      o = vk::ArtworkVertex{};
+      o.position[0] = static_cast<float>(points(j, 0));
+      o.position[1] = static_cast<float>(points(j, 1));
+    }
+  }
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_->artwork[vk::artworkVariant(active.count)].get());
+  vkCmdSetStencilReference(cmd, VK_STENCIL_FACE_FRONT_AND_BACK, stencil);
   vkCmdPushConstants(cmd, pipelines_->artworkLayout.get(), VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
                      sizeof push, &push);
   const VkBuffer buffer = streams_[slot].buffer.get();
   vkCmdBindVertexBuffers(cmd, 0, 1, &buffer, &offset);
   vkCmdBindIndexBuffer(cmd, indices_.buffer.get(), 0, VK_INDEX_TYPE_UINT32);
   vkCmdDrawIndexed(cmd, indexCount_, 1, 0, 0, 0);
-  offset += static_cast<VkDeviceSize>(vertexCount_) * sizeof(vk::ArtworkVertex);
+  if (rim) {
+    push.rim = 1;
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_->rim[vk::artworkVariant(active.count)].get());
+    vkCmdPushConstants(cmd, pipelines_->artworkLayout.get(), VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
+                       sizeof push, &push);
+    vkCmdDrawIndexed(cmd, rimIndexCount_, 1, indexCount_, 0, 0);
+  }
+  offset += static_cast<VkDeviceSize>(vertexCount_ + rimPoints_) * sizeof(vk::ArtworkVertex);
 }
 
 void MeshRenderer::drawOverlays(VkCommandBuffer cmd, const float view[4], VkExtent2D extent, const FrameDraw& frame, int slot,
@@ -235,15 +270,16 @@ void MeshRenderer::record(VkCommandBuffer cmd, int slot, VkExtent2D extent, cons
   const VkDescriptorSet set = descriptorSets_[frame.sampling == Sampling::kNearest ? 1 : 0];
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_->artworkLayout.get(), 0, 1, &set, 0, nullptr);
   VkDeviceSize offset = 0;
+  uint32_t stencil = 0;
   for (const OnionSkin& skin : frame.onion) {
     if (!skin.positions) throw std::invalid_argument("render: an onion skin has no positions");
     const float o = std::clamp(skin.opacity, 0.0f, 1.0f);
     const float tint[4] = {skin.tint[0] * o, skin.tint[1] * o, skin.tint[2] * o, o};
-    drawArtwork(cmd, view, pixelsPerUnit, *skin.positions, skin.weights, skin.heldPairs, tint, slot, offset);
+    drawArtwork(cmd, view, pixelsPerUnit, *skin.positions, skin.weights, skin.heldPairs, tint, slot, ++stencil, offset);
   }
   const float plain[4] = {1, 1, 1, 1};
-  drawArtwork(cmd, view, pixelsPerUnit, *frame.positions, frame.weights, frame.heldPairs, plain, slot, offset);
-  offset = (1 + kMaxOnionSkins) * static_cast<VkDeviceSize>(vertexCount_) * sizeof(vk::ArtworkVertex);
+  drawArtwork(cmd, view, pixelsPerUnit, *frame.positions, frame.weights, frame.heldPairs, plain, slot, ++stencil, offset);
+  offset = (1 + kMaxOnionSkins) * static_cast<VkDeviceSize>(vertexCount_ + rimPoints_) * sizeof(vk::ArtworkVertex);
   drawOverlays(cmd, view, extent, frame, slot, offset);
 }
 

@@ -1,6 +1,6 @@
 // Draws a RenderMesh at the current positions with every active key's artwork blended by the
-// weights (premultiplied alpha), then the overlays, into a render pass created by
-// createColorRenderPass. Heavy setup once (artwork upload, UVs, indices, pipelines); per frame only
+// weights (premultiplied alpha), near a key its rim (KeyRim) where the mesh drew nothing, then the
+// overlays, into a render pass created by createColorRenderPass. Heavy setup once (artwork upload, UVs, indices, pipelines); per frame only
 // positions (welded along glued cuts, with each vertex's closure: weldCuts) and overlay vertices
 // are written, into the stream buffer of the frame's slot, so the GPU keeps drawing earlier slots
 // meanwhile (libigl's precompute-then-solve, for pixels). The frame's sampling picks one of two
@@ -42,16 +42,20 @@ class MeshRenderer {
     int layers[kMaxActiveKeys] = {};
   };
   Active activeKeys(const Eigen::VectorXd& weights) const;
-  // pixelsPerUnit: target pixels per drawing pixel, for weldCuts.
+  // pixelsPerUnit: target pixels per drawing pixel, for weldCuts. stencil: this draw's reference
+  // (1 + its index in the frame), which its mesh writes and its rim tests.
   void drawArtwork(VkCommandBuffer cmd, const float view[4], double pixelsPerUnit, const Eigen::MatrixX2d& x,
                    const Eigen::VectorXd& weights, const std::vector<char>* heldPairs, const float tint[4], int slot,
-                   VkDeviceSize& offset);
+                   uint32_t stencil, VkDeviceSize& offset);
   void drawOverlays(VkCommandBuffer cmd, const float view[4], VkExtent2D extent, const FrameDraw& frame, int slot,
                     VkDeviceSize offset);
 
   int vertexCount_ = 0;
+  int rimPoints_ = 0;                            // the key rim's points, streamed after the vertices
   int keyCount_ = 0;
   uint32_t indexCount_ = 0;
+  uint32_t rimIndexCount_ = 0;                   // the rim's indices, after the mesh's
+  KeyRim rim_;
   std::vector<Edge> edges_;                      // overlay geometry, copied from the RenderMesh
   std::vector<std::vector<Edge>> cohesiveEdges_;
   CutSides cutSides_;                                  // welded in every frame (weldCuts)

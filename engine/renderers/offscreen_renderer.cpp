@@ -17,6 +17,7 @@ constexpr VkFormat kFormat = VK_FORMAT_R8G8B8A8_UNORM;
 struct OffscreenRenderer::Slot {
   vk::GpuImage msaa;      // absent when samples == 1
   vk::GpuImage resolved;  // single-sampled, copied to `readback`
+  vk::GpuImage stencil;   // the render pass's stencil, as many samples as `msaa`
   vk::FramebufferObject framebuffer;
   vk::GpuBuffer readback;  // host-visible, width * height * 4 bytes
   VkCommandBuffer cmd = VK_NULL_HANDLE;  // freed with the pool
@@ -52,7 +53,8 @@ OffscreenRenderer::OffscreenRenderer(const vk::VulkanContext& context, const Ren
   clear_ = {options.background[0] * a, options.background[1] * a, options.background[2] * a, a};
   VkDevice device = context.device();
   pool_ = vk::createCommandPool(context);
-  pass_ = vk::createColorRenderPass(device, kFormat, samples_, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
+  const VkFormat stencil = vk::stencilFormat(context.physicalDevice());
+  pass_ = vk::createColorRenderPass(device, kFormat, stencil, samples_, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
   renderer_ = std::make_unique<MeshRenderer>(
       context, pool_.get(), mesh, std::make_shared<const vk::RendererPipelines>(vk::createRendererPipelines(device, pass_.get(), samples_)),
       options.framesInFlight);
@@ -66,11 +68,16 @@ OffscreenRenderer::OffscreenRenderer(const vk::VulkanContext& context, const Ren
       spec.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT;
       slot->msaa = vk::createImage(context, spec, "the multisampled colour target");
     }
+    vk::ImageSpec stencilSpec = spec;
+    stencilSpec.format = stencil;
+    stencilSpec.samples = samples_;
+    stencilSpec.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSIENT_ATTACHMENT_BIT;
+    slot->stencil = vk::createImage(context, stencilSpec, "the offscreen stencil");
     spec.samples = VK_SAMPLE_COUNT_1_BIT;
     spec.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
     slot->resolved = vk::createImage(context, spec, "the offscreen colour target");
     slot->framebuffer = vk::createFramebuffer(device, pass_.get(), slot->msaa.view ? slot->msaa.view.get() : VK_NULL_HANDLE,
-                                              slot->resolved.view.get(), extent_);
+                                              slot->resolved.view.get(), slot->stencil.view.get(), extent_);
     slot->readback = vk::createBuffer(context, static_cast<VkDeviceSize>(extent_.width) * extent_.height * 4,
                                       VK_BUFFER_USAGE_TRANSFER_DST_BIT, true, "the read-back buffer");
     VkCommandBufferAllocateInfo allocate{};

@@ -65,6 +65,9 @@ struct PipelineSpec {
   VkPrimitiveTopology topology;
   std::vector<VkVertexInputAttributeDescription> attributes;
   uint32_t stride;
+  // What the pipeline does with the stencil: nothing; writes the draw's reference (dynamic) where it
+  // draws; or draws only where the stencil is not yet the reference, writing it (each sample once).
+  enum class Stencil { kNone, kWrite, kFirstOnly } stencil = Stencil::kNone;
 };
 
 PipelineObject createPipeline(VkDevice device, VkRenderPass pass, VkSampleCountFlagBits samples, VkPipelineLayout layout,
@@ -116,10 +119,23 @@ PipelineObject createPipeline(VkDevice device, VkRenderPass pass, VkSampleCountF
   blending.sType = VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO;
   blending.attachmentCount = 1;
   blending.pAttachments = &blend;
-  const std::array<VkDynamicState, 2> dynamicStates{VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
+  VkPipelineDepthStencilStateCreateInfo depthStencil{};
+  depthStencil.sType = VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO;
+  if (spec.stencil != PipelineSpec::Stencil::kNone) {
+    depthStencil.stencilTestEnable = VK_TRUE;
+    VkStencilOpState op{};
+    op.failOp = VK_STENCIL_OP_KEEP;
+    op.passOp = VK_STENCIL_OP_REPLACE;
+    op.depthFailOp = VK_STENCIL_OP_KEEP;
+    op.compareOp = spec.stencil == PipelineSpec::Stencil::kWrite ? VK_COMPARE_OP_ALWAYS : VK_COMPARE_OP_NOT_EQUAL;
+    op.compareMask = op.writeMask = 0xff;
+    depthStencil.front = depthStencil.back = op;
+  }
+  const std::array<VkDynamicState, 3> dynamicStates{VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR,
+                                                    VK_DYNAMIC_STATE_STENCIL_REFERENCE};
   VkPipelineDynamicStateCreateInfo dynamic{};
   dynamic.sType = VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO;
-  dynamic.dynamicStateCount = static_cast<uint32_t>(dynamicStates.size());
+  dynamic.dynamicStateCount = spec.stencil == PipelineSpec::Stencil::kNone ? 2 : 3;
   dynamic.pDynamicStates = dynamicStates.data();
   VkGraphicsPipelineCreateInfo info{};
   info.sType = VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO;
@@ -131,6 +147,7 @@ PipelineObject createPipeline(VkDevice device, VkRenderPass pass, VkSampleCountF
   info.pRasterizationState = &raster;
   info.pMultisampleState = &multisample;
   info.pColorBlendState = &blending;
+  info.pDepthStencilState = &depthStencil;
   info.pDynamicState = &dynamic;
   info.layout = layout;
   info.renderPass = pass;
@@ -162,7 +179,13 @@ RendererPipelines createRendererPipelines(VkDevice device, VkRenderPass pass, Vk
        VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST, artworkInput, sizeof(ArtworkVertex)},
       {artwork8_vert, sizeof(artwork8_vert), artwork8_frag, sizeof(artwork8_frag), "artwork (8 keys)",
        VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST, artworkInput, sizeof(ArtworkVertex)}};
-  for (int v = 0; v < 3; ++v) out.artwork[v] = createPipeline(device, pass, samples, out.artworkLayout.get(), artwork[v]);
+  for (int v = 0; v < 3; ++v) {
+    PipelineSpec spec = artwork[v];
+    spec.stencil = PipelineSpec::Stencil::kWrite;
+    out.artwork[v] = createPipeline(device, pass, samples, out.artworkLayout.get(), spec);
+    spec.stencil = PipelineSpec::Stencil::kFirstOnly;
+    out.rim[v] = createPipeline(device, pass, samples, out.artworkLayout.get(), spec);
+  }
   PipelineSpec overlay{overlay_vert, sizeof(overlay_vert), overlay_frag, sizeof(overlay_frag), "overlay lines",
                        VK_PRIMITIVE_TOPOLOGY_LINE_LIST,
                        {{0, 0, VK_FORMAT_R32G32_SFLOAT, 0}, {1, 0, VK_FORMAT_R32G32B32A32_SFLOAT, 2 * sizeof(float)}},

@@ -7,7 +7,7 @@
 // - the drawing sheet (the editor's keys): no vertex input, descriptor set 0 = {0: the artwork's
 //   sampler2DArray}, push constants SheetPush.
 // All blend premultiplied colour over the target (ONE, ONE_MINUS_SRC_ALPHA), without culling or
-// depth, with dynamic viewport and scissor.
+// depth, with dynamic viewport and scissor; the artwork pipelines use the stencil (render_pass.h).
 #pragma once
 
 #include "gpu/vulkan_object.h"
@@ -16,7 +16,7 @@
 
 namespace ib::vk {
 
-// Matches the push_constant block in shaders/artwork_push.glsl (std430, 104 bytes).
+// Matches the push_constant block in shaders/artwork_push.glsl (std430, 112 bytes).
 struct ArtworkPush {
   float view[4];     // clip = position * view.xy + view.zw
   float tint[4];     // multiplies the premultiplied colour
@@ -24,8 +24,10 @@ struct ArtworkPush {
   int layers[8];     // active keys' texture layers (= key indices)
   int activeCount;   // 0..8
   int keyCount;      // m
+  float keyness;     // 0..1: how much the keys' own drawings (layers m..2m-1) show (render::keyness)
+  int rim;           // 1 while drawing the keys' rims (render::KeyRim), 0 for the mesh
 };
-static_assert(sizeof(ArtworkPush) == 104, "ArtworkPush must match shaders/artwork_push.glsl");
+static_assert(sizeof(ArtworkPush) == 112, "ArtworkPush must match shaders/artwork_push.glsl");
 
 struct ArtworkVertex {
   float position[2];  // drawing pixels
@@ -45,7 +47,10 @@ struct RendererPipelines {
   DescriptorSetLayoutObject setLayout;
   PipelineLayoutObject artworkLayout;
   PipelineLayoutObject overlayLayout;
-  std::array<PipelineObject, 3> artwork;  // for up to 2, 4 and 8 active keys
+  // For up to 2, 4 and 8 active keys: the mesh (writes the draw's stencil reference, dynamic), and
+  // the keys' rims (render::KeyRim: only where the stencil is not yet the reference, writing it).
+  std::array<PipelineObject, 3> artwork;
+  std::array<PipelineObject, 3> rim;
   PipelineObject overlayLines;
   PipelineObject overlayTriangles;
 };

@@ -41,7 +41,8 @@ WindowPresenter::WindowPresenter(const RenderMesh& mesh, const WindowOptions& op
   samples_ = vk::supportedSamples(context_->physicalDevice(), options.samples);
   pool_ = vk::createCommandPool(*context_);
   swapchain_ = std::make_unique<vk::Swapchain>(*context_, options.vsync);
-  pass_ = vk::createColorRenderPass(context_->device(), swapchain_->format(), samples_, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR);
+  pass_ = vk::createColorRenderPass(context_->device(), swapchain_->format(), vk::stencilFormat(context_->physicalDevice()), samples_,
+                                    VK_IMAGE_LAYOUT_PRESENT_SRC_KHR);
   overlayPool_ = createOverlayPool(context_->device());
   pipelines_ = std::make_shared<const vk::RendererPipelines>(vk::createRendererPipelines(context_->device(), pass_.get(), samples_));
   renderer_ = std::make_unique<MeshRenderer>(*context_, pool_.get(), mesh, pipelines_, options.framesInFlight);

@@ -30,8 +30,12 @@ import { readPng, writePng } from './png.mjs';
 // at a key is 0.3: the silhouette is the mesh's multisampled edge (the drawings' rims are made
 // opaque, engine/output/silhouette_artwork.h), and SwiftShader's 4 samples sit elsewhere in the
 // pixel than lavapipe's, so an edge pixel can differ by one sample in four (0.25, seen 0.251).
+// Alpha mean at a key is 0.01: `inbetween render` draws a key as its drawing, with the drawing's
+// own antialiased edge (docs/rendering.md "Keys are the drawings"), which the export does not yet
+// do (its edge is the mesh's): pentagon-star recoloured's frame 24 measured 0.0052 (0.0041 at
+// frame 0), against at most 0.0025 before render drew the keys' own edges.
 export const TOLERANCE = {
-  key: { alphaMean: 0.005, alphaP99: 0.3, colourMean: 0.003, colourP99: 0.1 },
+  key: { alphaMean: 0.01, alphaP99: 0.3, colourMean: 0.003, colourP99: 0.1 },
   between: { alphaMean: 0.02, alphaP99: 0.4, colourMean: 0.015, colourP99: 0.2 },
 };
 
