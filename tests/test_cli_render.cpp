@@ -194,3 +194,45 @@ TEST_CASE("cli: render with keys on canvases of different sizes notes the canvas
   // Without --size the frames are the canvas.
   checkFrames(out, 0, 1, 140, 128);
 }
+
+TEST_CASE("cli: render --canvas WxH+X+Y that cuts the shape off notes how many frames and which, and --canvas fit shows them whole") {
+  const std::string cut = scratchPath("render-canvas-cut");
+  const CommandRun run = inbetween({"render", notch(), "-o", cut, "--frames", "0:3", "--canvas", "48x40+20-4", "--no-comesh", "--device", "cpu"});
+  INFO(run.output);
+  REQUIRE(run.code == 0);
+  checkFrames(cut, 0, 3, 48, 40);  // the canvas at one pixel per drawing pixel
+  CHECK_THAT(run.err, Contains("4 of 4 frames reach past the canvas (frames 0-3)"));
+  CHECK_THAT(run.err, Contains("--canvas fit"));
+
+  const std::string fit = scratchPath("render-canvas-fit");
+  const CommandRun fitted = inbetween({"render", notch(), "-o", fit, "--canvas", "fit", "--no-comesh", "--device", "cpu"});
+  INFO(fitted.output);
+  REQUIRE(fitted.code == 0);
+  CHECK(fitted.err.empty());
+  // Every frame whole: nothing drawn on the picture's border, something drawn inside.
+  const ib::RgbaImage first = ib::readPng(framePath(fit, 0));
+  for (int f = 0; exists(framePath(fit, f)); ++f) {
+    const ib::RgbaImage frame = ib::readPng(framePath(fit, f));
+    REQUIRE(frame.width == first.width);
+    int border = 0, drawn = 0;
+    for (int y = 0; y < frame.height; ++y)
+      for (int x = 0; x < frame.width; ++x) {
+        const bool edge = x == 0 || y == 0 || x == frame.width - 1 || y == frame.height - 1;
+        (edge ? border : drawn) += frame.at(x, y)[3] > 0;
+      }
+    INFO("frame " << f);
+    CHECK(border == 0);
+    CHECK(drawn > 100);
+  }
+}
+
+TEST_CASE("cli: render with a malformed --canvas exits 2 naming the option and its forms, and leaves no folder") {
+  const std::string out = scratchPath("render-bad-canvas");
+  for (const char* canvas : {"10x10", "big", "0x10+0+0", "10x10+0+0+0"}) {
+    const CommandRun run = inbetween({"render", notch(), "-o", out, "--canvas", canvas, "--no-comesh", "--device", "cpu"});
+    INFO(canvas << ": " << run.output);
+    checkRefused(run);
+    CHECK_THAT(run.err, Contains("--canvas"));
+    CHECK_FALSE(exists(out));
+  }
+}

@@ -30,7 +30,12 @@ constexpr const char* kUsage =
     "  -o, --output DIR     folder for the frames, created if missing (and removed again if the\n"
     "                       command fails)\n"
     "  --frames A:B         frames A to B inclusive (or one frame A); default all\n"
-    "  --size WxH           picture size in pixels; default the drawings' size\n"
+    "  --size WxH           picture size in pixels; default the canvas's size (one pixel per drawing\n"
+    "                       pixel)\n"
+    "  --canvas C           what the frames show: drawing (the drawings' canvas, the default: frames\n"
+    "                       line up with the drawings), fit (the whole animation, 8 px round it) or\n"
+    "                       WxH+X+Y in drawing pixels (e.g. 640x480-64+0); frames that reach past\n"
+    "                       it are noted, with how many and which\n"
     "  --set NAME=VALUE     a parameter instead of the scene's (repeatable): any of `inbetween\n"
     "                       parameters`, e.g. --set tau=1e-5 --set metric=per_key\n"
     "  --fps N              frame rate, the same as --set fps=N; default the scene's timeline's (24)\n"
@@ -77,7 +82,7 @@ int runRender(const std::vector<std::string>& rawArgs) {
   const cli::SplitSets split = cli::takeSets(cli::expandShortOutput(rawArgs), "render");
   if (cli::printHelpIfAsked(split.rest, kUsage)) return 0;
   const cli::Arguments arguments("render", split.rest,
-                                 {"output", "frames", "size", "fps", "background", "samples", "sampling", "onion", "sheet-every",
+                                 {"output", "frames", "size", "canvas", "fps", "background", "samples", "sampling", "onion", "sheet-every",
                                   "sheet-frames", "sheet-columns", "mesh", "device", "threads"},
                                  {"wireframe", "cohesive", "features", "no-comesh", "validation", "preview"});
   if (arguments.positional().size() != 1) throw InputError("render: needs exactly one SCENE file (see `inbetween render --help`)");
@@ -104,16 +109,11 @@ int runRender(const std::vector<std::string>& rawArgs) {
   cli::Progress progress;
   const SceneMultimesh built =
       sceneMultimesh(scene, options.mesh, [&](const std::string& stage, double fraction) { progress.update(stage, 0.3 * fraction); });
-  int canvasW = 0, canvasH = 0;
-  for (const RgbaImage& d : drawings) {
-    canvasW = std::max(canvasW, d.width);
-    canvasH = std::max(canvasH, d.height);
-  }
-  const std::array<int, 2> size = options.size.value_or(std::array<int, 2>{canvasW, canvasH});
   job.folder = folder.path().string();
   job.target = options.target;
-  job.target.width = size[0];
-  job.target.height = size[1];
+  job.target.width = options.size ? (*options.size)[0] : 0;  // 0 x 0: the canvas at one pixel per drawing pixel
+  job.target.height = options.size ? (*options.size)[1] : 0;
+  job.canvas = options.canvas;
   job.overlays = options.overlays;
   job.onion = options.onion;
   job.sheetEvery = options.sheetEvery;
@@ -126,11 +126,13 @@ int runRender(const std::vector<std::string>& rawArgs) {
                            [&](const std::string& stage, double fraction) { progress.update(stage, 0.3 + 0.7 * fraction); });
   progress.finish();
   for (const std::string& note : built.notes) std::fprintf(stderr, "inbetween: note: %s\n", note.c_str());
+  const std::string reach = report.reach.message(report.written);
+  if (!reach.empty()) std::fprintf(stderr, "inbetween: note: %s\n", reach.c_str());
   if (options.validation && !context.validationMessages().empty())
     throw std::runtime_error("render: the validation layer reported: " + context.validationMessages().front());
   folder.keep();
   std::printf("%s: rendered frames %d..%d (%dx%d, %g fps timeline) on %s in %.2f s (%.1f frames/s); multimesh %s\n",
-              scenePath.c_str(), job.frames[0], job.frames[1], size[0], size[1], scene.timeline.fps(), context.deviceName().c_str(),
+              scenePath.c_str(), job.frames[0], job.frames[1], report.width, report.height, scene.timeline.fps(), context.deviceName().c_str(),
               report.seconds, report.written / report.seconds, describeSource(built).c_str());
   const std::string frames = job.frames[0] == job.frames[1] ? report.firstFrame : report.firstFrame + " .. " + report.lastFrame;
   std::printf("wrote %s and %s%s\n", frames.c_str(), report.sheet.c_str(), options.preview ? (" and " + report.preview).c_str() : "");

@@ -63,6 +63,11 @@ RenderOptions parseRenderOptions(const cli::Arguments& a) {
   o.output = a.value("output", "");
   if (a.has("frames")) o.frames = cli::frameRange(a.value("frames", ""), "--frames");
   if (a.has("size")) o.size = parseSize(a.value("size", ""), "--size");
+  try {
+    o.canvas = render::parseCanvas(a.value("canvas", "drawing"));
+  } catch (const std::invalid_argument& e) {
+    throw InputError(std::string("--canvas: ") + e.what());
+  }
   o.target.samples = a.integer("samples", 4, 1, 64);
   o.target.background = parseBackground(a.value("background", "transparent"), "--background");
   o.overlays.wireframe = a.flag("wireframe");

@@ -6,6 +6,7 @@
 #include "core/png_image.h"
 #include "gpu/vulkan_context.h"
 #include "pipeline/scene_multimesh.h"
+#include "output/canvas.h"
 #include "renderers/offscreen_renderer.h"
 
 #include <array>
@@ -18,7 +19,8 @@ namespace ib {
 struct RenderOptions {
   std::string output;                  // -o DIR: folder for the frames (created if missing)
   std::optional<std::array<int, 2>> frames;  // --frames A:B, inclusive; default every frame
-  std::optional<std::array<int, 2>> size;    // --size WxH; default the drawings' canvas
+  std::optional<std::array<int, 2>> size;    // --size WxH; default the canvas at one pixel per drawing pixel
+  render::CanvasChoice canvas;               // --canvas drawing|fit|WxH+X+Y; default drawing
   render::OffscreenOptions target;     // --samples, --background (size filled in later)
   render::Overlays overlays;           // --wireframe, --cohesive, --features
   int onion = 0;                       // --onion N: neighbouring frames each side, 0..2

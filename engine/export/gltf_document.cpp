@@ -134,6 +134,11 @@ GltfDocument buildDocument(const DocumentInput& input) {
   info["fps"] = tinygltf::Value(baked.fps);
   info["frames"] = tinygltf::Value(tinygltf::Value::Array{tinygltf::Value(baked.frames.front()), tinygltf::Value(baked.frames.back())});
   info["shapeSize"] = tinygltf::Value(baked.shapeSize);
+  // The animation's bounds over every baked frame, drawing px (x0, y0, x1, y1; y down): where it
+  // reaches past the canvas, a client placing the sprite by its canvas learns how far.
+  const render::ViewBox bounds = render::boundsOf(baked.positions);
+  info["bounds"] = tinygltf::Value(tinygltf::Value::Array{tinygltf::Value(bounds.x0), tinygltf::Value(bounds.y0), tinygltf::Value(bounds.x1),
+                                                          tinygltf::Value(bounds.y1)});
   tinygltf::Value::Object extras;
   extras["inbetween"] = tinygltf::Value(info);
   model.asset.extras = tinygltf::Value(extras);

@@ -59,10 +59,32 @@ RenderJobReport renderFrames(const vk::VulkanContext& context, const Scene& scen
   }
   RenderMesh renderMesh = renderMeshOf(mesh, std::move(drawings), features);
   if (!scene.cutInk) renderMesh.inks = {};
-  OffscreenRenderer renderer = makeRenderer(context, renderMesh, options.target);
-  const int width = options.target.width, height = options.target.height;
-  const ViewBox view = fitView({0, 0, double(canvasW), double(canvasH)}, width, height, 0);
   FrameStream stream = sceneFrameStream(scene, mesh, options.solving);
+  const ViewBox drawingCanvas{0, 0, double(canvasW), double(canvasH)};
+  ViewBox animation = drawingCanvas;
+  if (options.canvas.kind == CanvasChoice::Kind::kFit) {
+    std::vector<Eigen::MatrixX2d> shapes;  // the rendered frames' positions
+    while (!stream.done() && stream.nextFrame() <= last) {
+      if (progress) progress("measuring the animation's bounds, frame " + std::to_string(stream.nextFrame()), 0);
+      const AnimationFrame frame = stream.next();
+      if (frame.index >= first) shapes.push_back(frame.x);
+    }
+    animation = boundsOf(shapes);
+    stream.restart();
+  }
+  RenderJobReport report;
+  report.canvas = canvasBox(options.canvas, drawingCanvas, animation);
+  OffscreenOptions target = options.target;
+  if (target.width == 0 && target.height == 0) {
+    const std::array<int, 2> pixels = canvasPixels(report.canvas);
+    target.width = pixels[0];
+    target.height = pixels[1];
+  }
+  OffscreenRenderer renderer = makeRenderer(context, renderMesh, target);
+  const int width = target.width, height = target.height;
+  report.width = width;
+  report.height = height;
+  const ViewBox view = fitView(report.canvas, width, height, 0);
 
   const int rendered = last - first + 1;
   const int every = options.sheetEvery > 0 ? options.sheetEvery : (rendered + 35) / 36;
@@ -74,7 +96,6 @@ RenderJobReport renderFrames(const vk::VulkanContext& context, const Scene& scen
   const int tileH = std::max(1, static_cast<int>(std::lround(double(tileW) * height / width)));
   std::vector<RgbaImage> tiles, preview;
   std::deque<int> inFlight;  // frame indices submitted, oldest first
-  RenderJobReport report;
   const auto started = std::chrono::steady_clock::now();
   const auto collect = [&] {
     const int f = inFlight.front();
@@ -96,6 +117,7 @@ RenderJobReport renderFrames(const vk::VulkanContext& context, const Scene& scen
   OnionStyle onion;
   onion.neighbours = options.onion;
   playWithNeighbours(stream, options.frames, options.onion, [&](const std::deque<AnimationFrame>& window, size_t at) {
+    report.reach.add(window[at].index, window[at].x, view);
     FrameDraw request = frameWithOnionSkins(window, at, onion, view, options.overlays);
     request.sampling = options.sampling;
     renderer.submit(request);

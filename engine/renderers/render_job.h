@@ -5,6 +5,7 @@
 #pragma once
 
 #include "core/png_image.h"
+#include "output/canvas.h"
 #include "pipeline/scene_frames.h"
 #include "renderers/offscreen_renderer.h"
 
@@ -22,7 +23,8 @@ namespace ib::render {
 struct RenderJobOptions {
   std::string folder;                  // where the files go (it exists); frame_NNNN.png, contact_sheet.png, preview.png
   std::array<int, 2> frames{0, 0};     // first and last frame, inclusive, within the timeline
-  OffscreenOptions target;             // size (width, height > 0), samples, background
+  OffscreenOptions target;             // size (width, height; 0 x 0: the canvas at 1:1), samples, background
+  CanvasChoice canvas;                 // what part of the drawing plane the frames show (default the drawings' canvas)
   Overlays overlays;                   // wireframe, cohesive edges, features
   Sampling sampling = Sampling::kLinear;
   int onion = 0;                       // neighbouring frames drawn each side as onion skins, 0..2
@@ -38,6 +40,9 @@ struct RenderJobReport {
   double seconds = 0;                  // wall time of solving and drawing them
   std::string firstFrame, lastFrame;   // their paths
   std::string sheet, preview;          // paths; preview empty when not asked
+  int width = 0, height = 0;           // the frames' size, px
+  ViewBox canvas;                      // the part of the drawing plane they show, drawing px
+  CanvasReach reach;                   // the frames that reach past it
 };
 
 // stage: what is being done, e.g. "rendering frame 12 (13 of 48)"; fraction of the job in [0, 1].
@@ -47,7 +52,8 @@ using JobProgress = std::function<void(const std::string& stage, double fraction
 std::string framePath(const std::string& folder, int frame);
 
 // Renders `scene`'s frames on `mesh` (a multimesh of the scene) with the key drawings of the
-// scene (pipeline/key_drawings.h) and its feature vertices (for the overlays). InputError for a
+// scene (pipeline/key_drawings.h) and its feature vertices (for the overlays). With a fitted
+// canvas the frames are solved twice: once for the animation's bounds, then to draw. InputError for a
 // frame range outside the timeline, sheet frames outside it, or a size the device has no memory
 // for (naming the option and what to do); vk::VulkanError for a device failure.
 RenderJobReport renderFrames(const vk::VulkanContext& context, const Scene& scene, const Multimesh& mesh,

@@ -46,7 +46,7 @@ export function gltfJson(file) {
 export function inbetweenExtras(file, json = gltfJson(file)) {
   const extras = json.asset?.extras?.inbetween;
   if (!extras) fail(`${file}: no asset.extras.inbetween`);
-  for (const field of ['canvas', 'pixelsPerUnit', 'fps', 'frames', 'shapeSize'])
+  for (const field of ['canvas', 'pixelsPerUnit', 'fps', 'frames', 'shapeSize', 'bounds'])
     if (extras[field] === undefined) fail(`${file}: asset.extras.inbetween has no ${field}`);
   return extras;
 }

@@ -30,6 +30,17 @@ if (Math.abs(extras.fps - reference.fps) > 1e-9) fail(`${file}: fps ${extras.fps
 if (Math.abs(extras.shapeSize - s) > 1e-6 * s) fail(`${file}: shapeSize ${extras.shapeSize}, the solver's is ${s}`);
 const frames = reference.frames.filter((f) => f.index >= A && f.index <= B);
 if (frames.length !== B - A + 1) fail(`${file}: frames ${A}..${B}, the reference has ${reference.frames.map((f) => f.index).join(',')}`);
+// The animation's bounds: the solved frames' extent, drawing px (x0, y0, x1, y1).
+const extent = [Infinity, Infinity, -Infinity, -Infinity];
+for (const f of frames)
+  for (let i = 0; i < f.positions.length; i += 2) {
+    extent[0] = Math.min(extent[0], f.positions[i]);
+    extent[1] = Math.min(extent[1], f.positions[i + 1]);
+    extent[2] = Math.max(extent[2], f.positions[i]);
+    extent[3] = Math.max(extent[3], f.positions[i + 1]);
+  }
+if (extras.bounds.some((b, i) => Math.abs(b - extent[i]) > 1e-6 * s))
+  fail(`${file}: bounds ${extras.bounds}, the solved frames reach ${extent}`);
 if (gltf.animations.length < 1) fail(`${file}: no animation`);
 const clip = gltf.animations[0];
 const span = (B - A) / extras.fps;
