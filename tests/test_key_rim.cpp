@@ -74,6 +74,19 @@ TEST_CASE("key rim: its points lie a rim's width from their boundary vertex, the
   CHECK(textureLayers(renderMesh).size() == 4);
 }
 
+namespace {
+
+// A premultiplied image straightened as a frame is written (rounding: c * 255 / a).
+RgbaImage straightened(RgbaImage image) {
+  for (size_t p = 0; p < image.pixels.size(); p += 4) {
+    const int a = image.pixels[p + 3];
+    for (int ch = 0; ch < 3; ++ch) image.pixels[p + ch] = a == 0 ? 0 : uint8_t(std::min(255, (image.pixels[p + ch] * 255 + a / 2) / a));
+  }
+  return image;
+}
+
+}  // namespace
+
 TEST_CASE("key fidelity: a drawing is itself at every scale, under both samplers, and a changed pixel is found where it is") {
   const RgbaImage drawing = paintedImage(12, 9, [](int x, int y) {
     return std::array<uint8_t, 4>{uint8_t(20 * x), uint8_t(25 * y), 200, uint8_t(x < 2 ? 0 : 90 + 15 * y)};
@@ -84,18 +97,9 @@ TEST_CASE("key fidelity: a drawing is itself at every scale, under both samplers
       REQUIRE(magnified.width == 12 * scale);
       // magnifiedDrawing is premultiplied; compared as straight alpha against the drawing it is itself
       // within rounding (straightening a premultiplied pixel loses under a level per 255 / alpha).
-      RgbaImage straight = magnified;
-      for (size_t p = 0; p < straight.pixels.size(); p += 4) {
-        const int a = straight.pixels[p + 3];
-        for (int ch = 0; ch < 3; ++ch) straight.pixels[p + ch] = a == 0 ? 0 : uint8_t(std::min(255, (straight.pixels[p + ch] * 255 + a / 2) / a));
-      }
-      CHECK(keyFidelity(straight, drawing, scale, nearest).over == 0);
+      CHECK(keyFidelity(straightened(magnified), drawing, scale, nearest).over == 0);
     }
-  RgbaImage changed = magnifiedDrawing(drawing, 1, true);
-  for (size_t p = 0; p < changed.pixels.size(); p += 4) {
-    const int a = changed.pixels[p + 3];
-    for (int ch = 0; ch < 3; ++ch) changed.pixels[p + ch] = a == 0 ? 0 : uint8_t(std::min(255, (changed.pixels[p + ch] * 255 + a / 2) / a));
-  }
+  RgbaImage changed = straightened(magnifiedDrawing(drawing, 1, true));
   changed.at(7, 4)[3] = static_cast<uint8_t>(changed.at(7, 4)[3] - 30);
   const KeyFidelity f = keyFidelity(changed, drawing, 1, true);
   CHECK(f.over == 1);

@@ -26,7 +26,7 @@ constexpr const char* kUsage =
     "render` draws (4 samples, the scene's sampling, the drawings' canvas) at the drawings' size times\n"
     "each scale, and compares it with the key's drawing magnified by the same sampler (nearest: texel\n"
     "squares; linear: bilinear), in premultiplied RGBA. One JSON line per scene and scale: scene,\n"
-    "scale, sampling, keys, pixels (compared, all keys), over_2 (pixels off by more than 2/255), over_8, the\n"
+    "scale, sampling, keys, pixels (compared, all keys), over_2 (pixels off by more than 2/255), the\n"
     "worst key's share over_2_share_worst, worst (the largest difference, 0-255) and where: worst_key,\n"
     "worst_x, worst_y (frame pixels).\n"
     "\n"
@@ -64,7 +64,7 @@ void run(const cli::Arguments& a, const BenchOutput& output) {
       target.height = canvasH * scale;
       target.background = {0, 0, 0, 0};
       render::OffscreenRenderer renderer(context, renderMesh, target);
-      long long pixels = 0, over2 = 0, over8 = 0;
+      long long pixels = 0, over2 = 0;
       double worstShare = 0;
       int worst = 0, worstKey = -1, worstX = -1, worstY = -1;
       for (int k = 0; k < keys; ++k) {
@@ -82,10 +82,8 @@ void run(const cli::Arguments& a, const BenchOutput& output) {
           writePng((std::filesystem::path(frames) / (name + "_key_" + std::to_string(k) + "_x" + std::to_string(scale) + ".png")).string(),
                    frame);
         const render::KeyFidelity fidelity = render::keyFidelity(frame, drawing, scale, nearest);
-        const render::KeyFidelity coarse = render::keyFidelity(frame, drawing, scale, nearest, 8);
         pixels += fidelity.pixels;
         over2 += fidelity.over;
-        over8 += coarse.over;
         worstShare = std::max(worstShare, double(fidelity.over) / std::max<long long>(1, fidelity.pixels));
         if (fidelity.worst > worst) worst = fidelity.worst, worstKey = k, worstX = fidelity.worstX, worstY = fidelity.worstY;
       }
@@ -95,7 +93,6 @@ void run(const cli::Arguments& a, const BenchOutput& output) {
                         {"keys", keys},
                         {"pixels", pixels},
                         {"over_2", over2},
-                        {"over_8", over8},
                         {"over_2_share_worst", worstShare},
                         {"worst", worst},
                         {"worst_key", worstKey},

@@ -7,6 +7,7 @@
 #include "output/render_mesh.h"
 
 #include <Eigen/Core>
+#include <array>
 #include <string>
 #include <vector>
 

@@ -63,13 +63,14 @@ RenderJobReport renderFrames(const vk::VulkanContext& context, const Scene& scen
   const ViewBox drawingCanvas{0, 0, double(canvasW), double(canvasH)};
   ViewBox animation = drawingCanvas;
   if (options.canvas.kind == CanvasChoice::Kind::kFit) {
-    std::vector<Eigen::MatrixX2d> shapes;  // the rendered frames' positions
+    animation = {INFINITY, INFINITY, -INFINITY, -INFINITY};  // grown by every rendered frame's positions
     while (!stream.done() && stream.nextFrame() <= last) {
       if (progress) progress("measuring the animation's bounds, frame " + std::to_string(stream.nextFrame()), 0);
       const AnimationFrame frame = stream.next();
-      if (frame.index >= first) shapes.push_back(frame.x);
+      if (frame.index < first) continue;
+      animation = {std::min(animation.x0, frame.x.col(0).minCoeff()), std::min(animation.y0, frame.x.col(1).minCoeff()),
+                   std::max(animation.x1, frame.x.col(0).maxCoeff()), std::max(animation.y1, frame.x.col(1).maxCoeff())};
     }
-    animation = boundsOf(shapes);
     stream.restart();
   }
   RenderJobReport report;
